@@ -1,0 +1,253 @@
+"""Mission configuration: validated, frozen, hashable.
+
+A :class:`Mission` groups one small model per concept (area, team, sensing, channel, timing).
+Every leaf field has a name that is unique across the groups, so a mission can also be read and
+changed as a flat ``{name: value}`` mapping (:meth:`Mission.params`, :meth:`Mission.replace`):
+that is what experiment grids and tidy result rows use. Defaults are the paper's Table 3.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Any, Literal, Self
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
+
+__all__ = [
+    "Area",
+    "Channel",
+    "ConfigError",
+    "Mission",
+    "Mtsp",
+    "Sensing",
+    "Team",
+    "Timing",
+]
+
+
+class ConfigError(ValueError):
+    """A configuration value is invalid; the message names the field and the allowed range."""
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(
+        frozen=True, extra="forbid", validate_default=True, allow_inf_nan=False
+    )
+
+
+class Area(_Model):
+    """The square search area ``[0, size]²`` and the base station (BS) on the ground."""
+
+    size: float = Field(4000.0, gt=0, description="side a of the square area, m")
+    bs: tuple[float, float] | None = Field(
+        None, description="BS position (x, y), m; None puts it at the centre"
+    )
+
+    @model_validator(mode="after")
+    def _bs_inside(self) -> Self:
+        if self.bs is not None:
+            x, y = self.bs
+            if not (0 <= x <= self.size and 0 <= y <= self.size):
+                raise ValueError(f"bs must lie inside the area [0, {self.size}]², got ({x}, {y})")
+        return self
+
+    @property
+    def bs_xy(self) -> tuple[float, float]:
+        """The BS position, resolving the centre default."""
+        return self.bs if self.bs is not None else (self.size / 2, self.size / 2)
+
+
+class Team(_Model):
+    """The drones and the planner that steers them."""
+
+    drones: int = Field(10, ge=1, le=1000, description="number of drones N_m")
+    speed: float = Field(5.0, gt=0, description="flight speed V_m, m/s")
+    planner: str = Field("covb", description="planner name, see sarlink.planner_names()")
+    alpha: float = Field(0.5, ge=0, le=1, description="ConCov weight of coverage (Eq. 12)")
+    nr: int = Field(6, ge=1, description="mTSP-ConB: drones reserved for the mTSP plan")
+    flight_time: float = Field(4000.0, gt=0, description="flight budget T_max, s")
+
+    @field_validator("planner")
+    @classmethod
+    def _known_planner(cls, name: str) -> str:
+        from sarlink.planners import planner_names
+
+        names = planner_names()
+        if name not in names:
+            raise ValueError(f"planner must be one of {', '.join(names)}")
+        return name
+
+
+class Sensing(_Model):
+    """The drones' target sensor (Eq. 2) and its imperfection (Section 4.3)."""
+
+    r: float = Field(500.0, gt=0, description="sensing range r, m")
+    p_miss: float = Field(0.0, ge=0, le=1, description="probability that one look misses")
+    look: Literal["per-pass", "per-period"] = Field(
+        "per-pass",
+        description="per-pass: one look each time a drone's range newly covers the target; "
+        "per-period: one look every t_s while in range",
+    )
+
+
+class Channel(_Model):
+    """Radio links: disc model (Eq. 4), optionally with log-normal shadowing (Eq. 13)."""
+
+    rc: float = Field(1000.0, gt=0, description="communication range r_c, m")
+    sigma: float = Field(0.0, ge=0, le=30, description="shadowing standard deviation, dB")
+    pathloss_exponent: float = Field(1.75, gt=0, description="path-loss exponent n")
+    coherence: float | None = Field(
+        None, gt=0, description="shadowing redraw period, s; None means t_s"
+    )
+    altitude: float = Field(
+        0.0, ge=0, description="drone altitude h, m, added to drone-ground link distances"
+    )
+
+
+class Timing(_Model):
+    """Time step, sensing period, horizon and the grid of cumulative records."""
+
+    dt: float = Field(1.0, gt=0, description="time increment t_i, s")
+    ts: float = Field(2.0, gt=0, description="sensing (direction-change) period t_s, s")
+    horizon: float = Field(4000.0, gt=0, description="simulated time, the largest t_d, s")
+    checkpoint: float = Field(
+        50.0, gt=0, description="spacing of the cumulative reachability records, s"
+    )
+
+
+class Mtsp(_Model):
+    """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings."""
+
+    solver: Literal["ga", "ortools"] = Field(
+        "ga", description="ga: the paper's genetic algorithm; ortools: OR-Tools routing"
+    )
+    objective: Literal["minsum", "minmax"] = Field(
+        "minsum", description="minsum: total distance (paper); minmax: longest tour"
+    )
+    min_cells: int | None = Field(
+        None, ge=1, description="minimum cells per drone; None means floor(cells / drones)"
+    )
+    population: int = Field(80, ge=8, description="GA population (rounded down to groups of 8)")
+    iterations: int = Field(5000, ge=1, description="GA iterations")
+    plan_seed: int = Field(0, ge=0, description="seed of the plan solver")
+
+
+def _multiple_of(value: float, dt: float) -> bool:
+    ratio = value / dt
+    return abs(ratio - round(ratio)) < 1e-9 * max(1.0, ratio) and round(ratio) >= 1
+
+
+_GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "mtsp")
+
+
+class Mission(_Model):
+    """One mission: everything a run depends on besides the seed and the run index."""
+
+    area: Area = Area()
+    team: Team = Team()
+    sensing: Sensing = Sensing()
+    channel: Channel = Channel()
+    timing: Timing = Timing()
+    mtsp: Mtsp = Mtsp()
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Self:
+        t = self.timing
+        if t.dt > t.ts:
+            raise ValueError(f"timing.dt must be at most timing.ts = {t.ts} s, got {t.dt}")
+        for name in ("ts", "horizon", "checkpoint"):
+            value = getattr(t, name)
+            if not _multiple_of(value, t.dt):
+                raise ValueError(f"timing.{name} must be a multiple of timing.dt = {t.dt} s, "
+                                 f"got {value}")
+        coh = self.channel.coherence
+        if coh is not None and not _multiple_of(coh, t.dt):
+            raise ValueError(f"channel.coherence must be a multiple of timing.dt = {t.dt} s, "
+                             f"got {coh}")
+        return self
+
+    # -- construction -------------------------------------------------------------------------
+
+    @classmethod
+    def build(cls, **params: Any) -> Mission:
+        """A mission from flat parameters, e.g. ``Mission.build(drones=22, rc=500)``."""
+        return cls().replace(**params)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> Mission:
+        """A mission from nested ``{group: {field: value}}`` data; errors name the field."""
+        try:
+            return cls.model_validate(data)
+        except ValidationError as exc:
+            raise ConfigError(_describe(exc)) from None
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> Mission:
+        """A mission from a TOML file with tables ``[area]``, ``[team]``, ... (all optional)."""
+        with open(path, "rb") as fh:
+            return cls.from_dict(tomllib.load(fh))
+
+    # -- flat view ----------------------------------------------------------------------------
+
+    def params(self) -> dict[str, Any]:
+        """Every leaf parameter by its unique name (``drones``, ``rc``, ``p_miss``, ...)."""
+        flat: dict[str, Any] = {}
+        for group in _GROUPS:
+            flat.update(getattr(self, group).model_dump())
+        return flat
+
+    def replace(self, **params: Any) -> Mission:
+        """A copy with some flat parameters changed, validated again."""
+        owner = param_groups()
+        data = self.model_dump()
+        for name, value in params.items():
+            if name not in owner:
+                raise ConfigError(
+                    f"unknown mission parameter {name!r}; known: {', '.join(sorted(owner))}"
+                )
+            data[owner[name]][name] = value
+        return Mission.from_dict(data)
+
+    # -- derived quantities used by the engine -------------------------------------------------
+
+    @property
+    def n_steps(self) -> int:
+        """Number of time increments in the horizon."""
+        return round(self.timing.horizon / self.timing.dt)
+
+    def steps(self, seconds: float) -> int:
+        """A duration in whole time increments (durations are validated as multiples of dt)."""
+        return max(1, round(seconds / self.timing.dt))
+
+    @property
+    def coherence(self) -> float:
+        """Shadowing coherence time, resolving the ``t_s`` default."""
+        c = self.channel.coherence
+        return self.timing.ts if c is None else c
+
+
+def param_groups() -> dict[str, str]:
+    """Flat parameter name -> the group that holds it."""
+    models = {"area": Area, "team": Team, "sensing": Sensing, "channel": Channel,
+              "timing": Timing, "mtsp": Mtsp}
+    return {field: group for group, model in models.items() for field in model.model_fields}
+
+
+def _describe(exc: ValidationError) -> str:
+    """One readable line per error: ``team.drones: Input should be greater than or equal to 1``."""
+    lines = []
+    for err in exc.errors():
+        loc = ".".join(str(p) for p in err["loc"])
+        msg = err["msg"].removeprefix("Value error, ")
+        got = err.get("input")
+        suffix = "" if isinstance(got, dict) or got is None else f" (got {got!r})"
+        lines.append(f"{loc}: {msg}{suffix}" if loc else f"{msg}")
+    return "; ".join(lines)

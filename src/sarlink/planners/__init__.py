@@ -1,0 +1,25 @@
+"""Planner registry: planners are looked up by name (``covb``, ``conb``, ``concov``, ...)."""
+
+from __future__ import annotations
+
+from sarlink.planners.base import Planner, Steering
+from sarlink.planners.conb import ConB
+from sarlink.planners.concov import ConCov
+from sarlink.planners.covb import CovB
+
+__all__ = ["PLANNERS", "Planner", "Steering", "get_planner", "planner_names"]
+
+PLANNERS: dict[str, Planner] = {p.name: p for p in (CovB(), ConB(), ConCov())}
+
+
+def planner_names() -> list[str]:
+    """Names of the registered planners, in registration order."""
+    return list(PLANNERS)
+
+
+def get_planner(name: str) -> Planner:
+    """The planner registered as ``name``."""
+    try:
+        return PLANNERS[name]
+    except KeyError:
+        raise KeyError(f"unknown planner {name!r}; known: {', '.join(PLANNERS)}") from None
