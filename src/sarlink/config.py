@@ -151,12 +151,12 @@ _GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "mts
 class Mission(_Model):
     """One mission: everything a run depends on besides the seed and the run index."""
 
-    area: Area = Area()
-    team: Team = Team()
-    sensing: Sensing = Sensing()
-    channel: Channel = Channel()
-    timing: Timing = Timing()
-    mtsp: Mtsp = Mtsp()
+    area: Area = Field(default_factory=Area)
+    team: Team = Field(default_factory=Team)
+    sensing: Sensing = Field(default_factory=Sensing)
+    channel: Channel = Field(default_factory=Channel)
+    timing: Timing = Field(default_factory=Timing)
+    mtsp: Mtsp = Field(default_factory=Mtsp)
 
     @model_validator(mode="after")
     def _consistent(self) -> Self:

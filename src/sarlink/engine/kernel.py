@@ -1,0 +1,509 @@
+"""The mission model as Numba kernels: one run from arrays and scalars (``MODEL.md``).
+
+This module is the only copy of the model. It never validates: :mod:`sarlink.engine.run`
+builds its inputs from a checked :class:`~sarlink.config.Mission`.
+
+Node indices: drones ``0 .. N-1``, the BS is node ``N``, the target (a node only for
+reachability) is node ``N + 1``. Headings are unit vectors ``(hx, hy)``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from sarlink.engine.codes import Look, Mode, Rule
+
+SEARCHING = int(Mode.SEARCHING)
+RETURNING = int(Mode.RETURNING)
+LANDED = int(Mode.LANDED)
+COVB = int(Rule.COVB)
+CONB = int(Rule.CONB)
+CONCOV = int(Rule.CONCOV)
+PER_PERIOD = int(Look.PER_PERIOD)
+
+_TINY = 1e-12
+_LN10 = math.log(10.0)
+
+
+class Params(NamedTuple):
+    """Scalars of one mission, in kernel units (metres, seconds, steps)."""
+
+    size: float
+    bs_x: float
+    bs_y: float
+    speed: float
+    rule: int
+    alpha: float
+    flight_time: float
+    r: float
+    p_miss: float
+    look: int
+    rc: float
+    sigma: float
+    pathloss_exponent: float
+    altitude: float
+    dt: float
+    ts_steps: int
+    coherence_steps: int
+    n_steps: int
+    record: bool
+
+
+@njit(cache=True)
+def _unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
+    """``(x, y)`` scaled to length 1, or the fallback ``(fx, fy)`` if it vanishes."""
+    n = math.sqrt(x * x + y * y)
+    if n < _TINY:
+        return fx, fy
+    return x / n, y / n
+
+
+@njit(cache=True)
+def _inside(x: float, y: float, size: float) -> bool:
+    return 0.0 <= x <= size and 0.0 <= y <= size
+
+
+@njit(cache=True)
+def _boundary_turn(
+    x: float, y: float, hx: float, hy: float, step: float, size: float, rng: np.random.Generator
+) -> tuple[float, float, bool]:
+    """Keep the heading if the next increment stays inside; else a random inward heading.
+
+    The inward headings are the half circle facing away from each wall the increment would
+    cross (a quarter circle at a corner). A redraw that crosses another wall adds that wall.
+    """
+    nx, ny = x + step * hx, y + step * hy
+    if _inside(nx, ny, size):
+        return hx, hy, False
+    left = right = bottom = top = False
+    while True:
+        left |= nx < 0.0
+        right |= nx > size
+        bottom |= ny < 0.0
+        top |= ny > size
+        lo, hi = 0.0, 2.0 * math.pi
+        if left:
+            lo, hi = -0.5 * math.pi, 0.5 * math.pi
+        elif right:
+            lo, hi = 0.5 * math.pi, 1.5 * math.pi
+        if bottom:
+            lo, hi = (0.0, 0.5 * math.pi) if left else ((0.5 * math.pi, math.pi) if right
+                                                        else (0.0, math.pi))
+        elif top:
+            lo, hi = ((-0.5 * math.pi, 0.0) if left else ((math.pi, 1.5 * math.pi) if right
+                                                          else (math.pi, 2.0 * math.pi)))
+        theta = lo + rng.random() * (hi - lo)
+        hx, hy = math.cos(theta), math.sin(theta)
+        nx, ny = x + step * hx, y + step * hy
+        if _inside(nx, ny, size):
+            return hx, hy, True
+
+
+@njit(cache=True)
+def _draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> None:
+    """Redraw the per-link squared range: ``10 n log10(d/rc) + S <= 0  <=>  d² <= rc² 10^(-S/5n)``.
+
+    With ``S = 0`` the factor is exactly 1, so ``sigma = 0`` is the disc model bit for bit.
+    """
+    m = thr2.shape[0]
+    rc2 = p.rc * p.rc
+    scale = -_LN10 / (5.0 * p.pathloss_exponent)
+    for a in range(m):
+        for b in range(a + 1, m):
+            s = p.sigma * rng.standard_normal()
+            v = rc2 * math.exp(scale * s)
+            thr2[a, b] = v
+            thr2[b, a] = v
+
+
+@njit(cache=True)
+def _distances(px: np.ndarray, py: np.ndarray, d2: np.ndarray) -> None:
+    """Planar squared distances between all nodes."""
+    m = px.shape[0]
+    for a in range(m):
+        d2[a, a] = 0.0
+        for b in range(a + 1, m):
+            dx = px[a] - px[b]
+            dy = py[a] - py[b]
+            v = dx * dx + dy * dy
+            d2[a, b] = v
+            d2[b, a] = v
+
+
+@njit(cache=True)
+def _links(d2: np.ndarray, thr2: np.ndarray, n: int, h2: float, adj: np.ndarray) -> None:
+    """Adjacency over drones, BS (node n) and target (node n+1); drone-ground links add h²."""
+    m = n + 2
+    for a in range(m):
+        adj[a, a] = False
+        for b in range(a + 1, m):
+            extra = h2 if (a < n) != (b < n) else 0.0
+            link = d2[a, b] + extra <= thr2[a, b]
+            adj[a, b] = link
+            adj[b, a] = link
+
+
+@njit(cache=True)
+def _spread(adj: np.ndarray, m: int, reached: np.ndarray, stack: np.ndarray) -> None:
+    """Mark every node of ``0 .. m-1`` connected to an already marked one (in place)."""
+    top = 0
+    for a in range(m):
+        if reached[a]:
+            stack[top] = a
+            top += 1
+    while top > 0:
+        top -= 1
+        a = stack[top]
+        for b in range(m):
+            if adj[a, b] and not reached[b]:
+                reached[b] = True
+                stack[top] = b
+                top += 1
+
+
+@njit(cache=True)
+def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -> None:
+    """``out[a]``: node ``a`` (drone or BS) has a multihop route to the BS."""
+    out[:] = False
+    out[n] = True
+    _spread(adj, n + 1, out, stack)
+
+
+@njit(cache=True)
+def _covb_force(
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, d2: np.ndarray, r: float,
+) -> tuple[float, float]:
+    """Unit direction of Eq. 6: own heading / r plus a 1/d push from each drone within r."""
+    n = hx.shape[0]
+    fx, fy = hx[i] / r, hy[i] / r
+    r2 = r * r
+    neighbours = False
+    for j in range(n):
+        if j == i or mode[j] == LANDED:
+            continue
+        dd = d2[i, j]
+        if dd <= r2:
+            neighbours = True
+            if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
+                fx += (px[i] - px[j]) / dd
+                fy += (py[i] - py[j]) / dd
+    if not neighbours:
+        return hx[i], hy[i]
+    return _unit(fx, fy, hx[i], hy[i])
+
+
+@njit(cache=True)
+def _velocity(j: int, n: int, mode: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+              speed: float) -> tuple[float, float]:
+    if j >= n or mode[j] == LANDED:
+        return 0.0, 0.0
+    return speed * hx[j], speed * hy[j]
+
+
+@njit(cache=True)
+def _conb_force(
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params,
+) -> tuple[float, float]:
+    """Unit direction of Eq. 9 (Algorithm 1, part 2).
+
+    Keep the heading if drone ``i`` is predicted to reach the BS at ``t + t_s``; else steer
+    towards where the neighbour with the longest contact (among those predicted to keep a
+    route to the BS, if any) would be when the contact ends.
+    """
+    n = hx.shape[0]
+    if routed_next[i]:
+        return hx[i], hy[i]
+    neighbours = False
+    candidates = False
+    for j in range(n + 1):
+        if j != i and adj[i, j]:
+            neighbours = True
+            candidates |= routed_next[j]
+    if not neighbours:
+        return hx[i], hy[i]
+    rc2 = p.rc * p.rc
+    vix, viy = p.speed * hx[i], p.speed * hy[i]
+    best = -1
+    best_rank = -1.0
+    best_d2 = np.inf
+    best_tau = 0.0
+    for j in range(n + 1):
+        if j == i or not adj[i, j] or (candidates and not routed_next[j]):
+            continue
+        vjx, vjy = _velocity(j, n, mode, hx, hy, p.speed)
+        relx, rely = px[j] - px[i], py[j] - py[i]
+        rvx, rvy = vjx - vix, vjy - viy
+        a = rvx * rvx + rvy * rvy
+        rel2 = relx * relx + rely * rely
+        if a < _TINY:  # equal velocities: the contact never ends
+            rank, tau = np.inf, p.flight_time
+        else:
+            b = 2.0 * (relx * rvx + rely * rvy)
+            disc = b * b - 4.0 * a * (rel2 - rc2)
+            tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
+            rank = tau
+        if rank > best_rank or (rank == best_rank and rel2 < best_d2):
+            best, best_rank, best_d2, best_tau = j, rank, rel2, tau
+    vjx, vjy = _velocity(best, n, mode, hx, hy, p.speed)
+    cx, cy = px[best] + vjx * best_tau, py[best] + vjy * best_tau
+    nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
+    ux, uy = _unit(cx - nx, cy - ny, hx[i], hy[i])
+    rx, ry = hx[i] + ux, hy[i] + uy
+    if math.sqrt(rx * rx + ry * ry) < 1e-9:  # flying straight away from the contact point
+        return ux, uy
+    return _unit(rx, ry, ux, uy)
+
+
+@njit(cache=True)
+def _predict_routes(
+    px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
+    p: Params, qx: np.ndarray, qy: np.ndarray, d2: np.ndarray, thr2: np.ndarray,
+    adj: np.ndarray, out: np.ndarray, stack: np.ndarray,
+) -> None:
+    """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range)."""
+    n = hx.shape[0]
+    ahead = p.speed * p.ts_steps * p.dt
+    for j in range(n + 2):
+        qx[j], qy[j] = px[j], py[j]
+        if j < n and mode[j] != LANDED:
+            qx[j] += ahead * hx[j]
+            qy[j] += ahead * hy[j]
+    _distances(qx, qy, d2)
+    _links(d2, thr2, n, p.altitude * p.altitude, adj)
+    _bs_component(adj, n, out, stack)
+
+
+@njit(cache=True)
+def _fly_route(
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, wp: np.ndarray, wp_next: np.ndarray, wp_end: np.ndarray, step: float,
+) -> None:
+    """Advance drone ``i`` by ``step`` metres along its waypoints; land after the last one."""
+    travel = step
+    while True:
+        k = wp_next[i]
+        tx, ty = wp[k, 0], wp[k, 1]
+        dx, dy = tx - px[i], ty - py[i]
+        d = math.sqrt(dx * dx + dy * dy)
+        if d > travel:
+            px[i] += travel * dx / d
+            py[i] += travel * dy / d
+            hx[i], hy[i] = dx / d, dy / d
+            return
+        px[i], py[i] = tx, ty
+        travel -= d
+        wp_next[i] = k + 1
+        if k + 1 >= wp_end[i]:
+            mode[i] = LANDED
+            return
+        nx, ny = wp[k + 1, 0] - tx, wp[k + 1, 1] - ty
+        hx[i], hy[i] = _unit(nx, ny, hx[i], hy[i])
+        if travel <= 0.0:
+            return
+
+
+@njit(cache=True)
+def simulate_kernel(
+    p: Params,
+    target_x: float,
+    target_y: float,
+    pos0: np.ndarray,
+    heading0: np.ndarray,
+    wp: np.ndarray,
+    wp_start: np.ndarray,
+    cp_steps: np.ndarray,
+    rng_turn: np.random.Generator,
+    rng_shadow: np.random.Generator,
+    rng_look: np.random.Generator,
+) -> tuple:
+    """Simulate one run; return its event times, cumulative records and optional trajectory.
+
+    ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
+    ``cp_steps`` are the steps at which the cumulative records are taken.
+    Returns ``(events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route,
+    traj_mode)`` with ``events = [t_detect, t_notify, detector, immediate]`` (-1: never).
+    """
+    n = pos0.shape[0]
+    m = n + 2
+    bs, tg = n, n + 1
+    px = np.empty(m)
+    py = np.empty(m)
+    hx = np.empty(n)
+    hy = np.empty(n)
+    px[:n], py[:n] = pos0[:, 0], pos0[:, 1]
+    px[bs], py[bs] = p.bs_x, p.bs_y
+    px[tg], py[tg] = target_x, target_y
+    for i in range(n):
+        hx[i], hy[i] = math.cos(heading0[i]), math.sin(heading0[i])
+    mode = np.full(n, SEARCHING, dtype=np.int8)
+    on_route = np.empty(n, dtype=np.bool_)
+    wp_next = wp_start[:n].copy()
+    wp_end = wp_start[1:].copy()
+    for i in range(n):
+        on_route[i] = wp_end[i] > wp_start[i]
+        if on_route[i]:
+            k = wp_start[i]
+            hx[i], hy[i] = _unit(wp[k, 0] - px[i], wp[k, 1] - py[i], hx[i], hy[i])
+    last_change = np.zeros(n, dtype=np.int64)
+    knows = np.zeros(n, dtype=np.bool_)
+    in_range = np.zeros(n, dtype=np.bool_)
+    pass_start = np.zeros(n, dtype=np.int64)
+
+    d2 = np.empty((m, m))
+    thr2 = np.full((m, m), p.rc * p.rc)
+    adj = np.empty((m, m), dtype=np.bool_)
+    routed = np.empty(n + 1, dtype=np.bool_)
+    flood = np.empty(n + 1, dtype=np.bool_)
+    stack = np.empty(m, dtype=np.int64)
+    # prediction buffers (shadow-free ranges)
+    qx = np.empty(m)
+    qy = np.empty(m)
+    qd2 = np.empty((m, m))
+    qthr2 = np.full((m, m), p.rc * p.rc)
+    qadj = np.empty((m, m), dtype=np.bool_)
+    routed_next = np.empty(n + 1, dtype=np.bool_)
+    nhx = np.empty(n)
+    nhy = np.empty(n)
+
+    kk = p.n_steps + 1 if p.record else 0
+    traj_pos = np.empty((kk, n, 2))
+    traj_head = np.empty((kk, n))
+    traj_knows = np.empty((kk, n), dtype=np.bool_)
+    traj_route = np.empty((kk, n), dtype=np.bool_)
+    traj_mode = np.empty((kk, n), dtype=np.int8)
+
+    reach_cum = np.empty(cp_steps.shape[0])
+    conn_cum = np.empty(cp_steps.shape[0])
+    acc_reach = 0.0
+    acc_conn = 0.0
+    ci = 0
+    t_det = -1.0
+    t_not = -1.0
+    detector = -1
+    immediate = False
+    r2 = p.r * p.r
+    h2 = p.altitude * p.altitude
+    step = p.speed * p.dt
+
+    for k in range(p.n_steps + 1):
+        t = k * p.dt
+        while ci < cp_steps.shape[0] and cp_steps[ci] == k:
+            reach_cum[ci] = acc_reach
+            conn_cum[ci] = acc_conn
+            ci += 1
+        # ---- observe: sense, link, flood, notify, account ----
+        if p.sigma > 0.0 and k % p.coherence_steps == 0:
+            _draw_shadowing(thr2, p, rng_shadow)
+        _distances(px, py, d2)
+        for i in range(n):
+            now_in = d2[i, tg] <= r2
+            if now_in:
+                look = not in_range[i]
+                if look:
+                    pass_start[i] = k
+                elif p.look == PER_PERIOD and (k - pass_start[i]) % p.ts_steps == 0:
+                    look = True
+                if look and rng_look.random() >= p.p_miss:
+                    knows[i] = True
+                    if t_det < 0.0:
+                        t_det = t
+                        detector = i
+            in_range[i] = now_in
+        _links(d2, thr2, n, h2, adj)
+        _bs_component(adj, n, routed, stack)
+        if t_det >= 0.0:
+            flood[:n] = knows
+            flood[bs] = False
+            _spread(adj, n + 1, flood, stack)
+            knows[:] = flood[:n]
+            if t_not < 0.0 and flood[bs]:
+                t_not = t
+                immediate = t_not == t_det
+        reachable = adj[tg, bs]
+        connected = 0
+        for i in range(n):
+            if routed[i]:
+                connected += 1
+                if adj[tg, i]:
+                    reachable = True
+        if p.record:
+            for i in range(n):
+                traj_pos[k, i, 0] = px[i]
+                traj_pos[k, i, 1] = py[i]
+                traj_head[k, i] = math.atan2(hy[i], hx[i])
+            traj_knows[k] = knows
+            traj_route[k] = routed[:n]
+            traj_mode[k] = mode
+        if k == p.n_steps:
+            break
+        acc_reach += p.dt if reachable else 0.0
+        acc_conn += p.dt * connected / n
+
+        # ---- decide: every drone from the state before anyone turns ----
+        predicted = False
+        for i in range(n):
+            nhx[i], nhy[i] = hx[i], hy[i]
+            if on_route[i] or mode[i] != SEARCHING:
+                continue
+            hdx, hdy = p.bs_x - px[i], p.bs_y - py[i]
+            home = math.sqrt(hdx * hdx + hdy * hdy)
+            if (p.flight_time - t) - home / p.speed < 2.0 * p.dt:
+                mode[i] = RETURNING
+                nhx[i], nhy[i] = _unit(hdx, hdy, hx[i], hy[i])
+                continue
+            if k - last_change[i] >= p.ts_steps:
+                last_change[i] = k
+                cx, cy = hx[i], hy[i]
+                vx, vy = hx[i], hy[i]
+                if p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0):
+                    cx, cy = _covb_force(i, px, py, hx, hy, mode, d2, p.r)
+                if p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0):
+                    if not predicted:
+                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, qd2, qthr2, qadj,
+                                        routed_next, stack)
+                        predicted = True
+                    vx, vy = _conb_force(i, px, py, hx, hy, mode, adj, routed_next, p)
+                if p.rule == COVB:
+                    nhx[i], nhy[i] = cx, cy
+                elif p.rule == CONB:
+                    nhx[i], nhy[i] = vx, vy
+                elif p.alpha == 1.0:  # Eq. 12 reduces to one unit force: skip the re-scaling
+                    nhx[i], nhy[i] = cx, cy
+                elif p.alpha == 0.0:
+                    nhx[i], nhy[i] = vx, vy
+                else:
+                    nhx[i], nhy[i] = _unit(p.alpha * cx + (1.0 - p.alpha) * vx,
+                                           p.alpha * cy + (1.0 - p.alpha) * vy, hx[i], hy[i])
+            nhx[i], nhy[i], turned = _boundary_turn(px[i], py[i], nhx[i], nhy[i], step, p.size,
+                                                    rng_turn)
+            if turned:
+                last_change[i] = k
+        hx[:] = nhx
+        hy[:] = nhy
+
+        # ---- move ----
+        for i in range(n):
+            if mode[i] == LANDED:
+                continue
+            if on_route[i]:
+                _fly_route(i, px, py, hx, hy, mode, wp, wp_next, wp_end, step)
+            elif mode[i] == RETURNING:
+                dx, dy = p.bs_x - px[i], p.bs_y - py[i]
+                if dx * dx + dy * dy <= step * step:
+                    px[i], py[i] = p.bs_x, p.bs_y
+                    mode[i] = LANDED
+                else:
+                    px[i] += step * hx[i]
+                    py[i] += step * hy[i]
+            else:
+                px[i] += step * hx[i]
+                py[i] += step * hy[i]
+
+    events = np.array([t_det, t_not, float(detector), 1.0 if immediate else 0.0])
+    return events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route, traj_mode
