@@ -120,63 +120,107 @@ def _draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> No
             thr2[b, a] = v
 
 
+# Adjacency is kept as bitsets: row ``a`` of ``adj`` is ``W = ceil((N + 2) / 64)`` words whose
+# bit ``b`` says whether nodes ``a`` and ``b`` are linked; a breadth-first search then costs a
+# few word operations per node instead of a scan of a boolean matrix.
+_ONE = np.uint64(1)
+_DEBRUIJN = np.uint64(0x03F79D71B4CB0A89)
+_DEBRUIJN_INDEX = np.array(
+    [0, 1, 48, 2, 57, 49, 28, 3, 61, 58, 50, 42, 38, 29, 17, 4, 62, 55, 59, 36, 53, 51, 43, 22,
+     45, 39, 33, 30, 24, 18, 12, 5, 63, 47, 56, 27, 60, 41, 37, 16, 54, 35, 52, 21, 44, 32, 23,
+     11, 46, 26, 40, 15, 34, 20, 31, 10, 25, 14, 19, 9, 13, 8, 7, 6], dtype=np.int64)
+
+
 @njit(cache=True)
-def _distances(px: np.ndarray, py: np.ndarray, d2: np.ndarray) -> None:
-    """Planar squared distances between all nodes."""
-    m = px.shape[0]
-    for a in range(m):
-        d2[a, a] = 0.0
-        for b in range(a + 1, m):
+def _has(bits: np.ndarray, a: int) -> bool:
+    return (bits[a >> 6] >> np.uint64(a & 63)) & _ONE != 0
+
+
+@njit(cache=True)
+def _add(bits: np.ndarray, a: int) -> None:
+    bits[a >> 6] |= _ONE << np.uint64(a & 63)
+
+
+@njit(cache=True)
+def _linked(adj: np.ndarray, a: int, b: int) -> bool:
+    return (adj[a, b >> 6] >> np.uint64(b & 63)) & _ONE != 0
+
+
+@njit(cache=True)
+def _link(adj: np.ndarray, a: int, b: int) -> None:
+    adj[a, b >> 6] |= _ONE << np.uint64(b & 63)
+    adj[b, a >> 6] |= _ONE << np.uint64(a & 63)
+
+
+@njit(cache=True)
+def _links(
+    px: np.ndarray, py: np.ndarray, n: int, shadowed: bool, thr2: np.ndarray, rc2: float,
+    h2: float, adj: np.ndarray,
+) -> None:
+    """Links among drones, BS (node n) and target (node n+1); drone-ground links add h²."""
+    adj[:] = 0
+    for a in range(n):
+        for b in range(a + 1, n):
             dx = px[a] - px[b]
             dy = py[a] - py[b]
-            v = dx * dx + dy * dy
-            d2[a, b] = v
-            d2[b, a] = v
+            if dx * dx + dy * dy <= (thr2[a, b] if shadowed else rc2):
+                _link(adj, a, b)
+    for g in range(n, n + 2):
+        for a in range(g):
+            dx = px[a] - px[g]
+            dy = py[a] - py[g]
+            dd = dx * dx + dy * dy + (h2 if a < n else 0.0)
+            if dd <= (thr2[a, g] if shadowed else rc2):
+                _link(adj, a, g)
 
 
 @njit(cache=True)
-def _links(d2: np.ndarray, thr2: np.ndarray, n: int, h2: float, adj: np.ndarray) -> None:
-    """Adjacency over drones, BS (node n) and target (node n+1); drone-ground links add h²."""
-    m = n + 2
-    for a in range(m):
-        adj[a, a] = False
-        for b in range(a + 1, m):
-            extra = h2 if (a < n) != (b < n) else 0.0
-            link = d2[a, b] + extra <= thr2[a, b]
-            adj[a, b] = link
-            adj[b, a] = link
-
-
-@njit(cache=True)
-def _spread(adj: np.ndarray, m: int, reached: np.ndarray, stack: np.ndarray) -> None:
-    """Mark every node of ``0 .. m-1`` connected to an already marked one (in place)."""
+def _spread(adj: np.ndarray, reached: np.ndarray, stack: np.ndarray) -> None:
+    """Add to ``reached`` every node connected to a node already in it (in place)."""
     top = 0
-    for a in range(m):
-        if reached[a]:
-            stack[top] = a
+    for w in range(reached.shape[0]):
+        bits = reached[w]
+        while bits:
+            low = bits & (~bits + _ONE)
+            stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
             top += 1
+            bits ^= low
     while top > 0:
         top -= 1
         a = stack[top]
-        for b in range(m):
-            if adj[a, b] and not reached[b]:
-                reached[b] = True
-                stack[top] = b
+        for w in range(reached.shape[0]):
+            new = adj[a, w] & ~reached[w]
+            reached[w] |= new
+            while new:
+                low = new & (~new + _ONE)
+                stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
                 top += 1
+                new ^= low
+
+
+@njit(cache=True)
+def _component(adj: np.ndarray, tg: int, out: np.ndarray, stack: np.ndarray) -> None:
+    """Grow the node set ``out`` to everything linked to it, never routing through the target.
+
+    The target (node ``tg``) is a leaf: it is marked while spreading, then removed.
+    """
+    _add(out, tg)
+    _spread(adj, out, stack)
+    out[tg >> 6] &= ~(_ONE << np.uint64(tg & 63))
 
 
 @njit(cache=True)
 def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -> None:
-    """``out[a]``: node ``a`` (drone or BS) has a multihop route to the BS."""
-    out[:] = False
-    out[n] = True
-    _spread(adj, n + 1, out, stack)
+    """``out``: the nodes (drones and the BS, node n) with a multihop route to the BS."""
+    out[:] = 0
+    _add(out, n)
+    _component(adj, n + 1, out, stack)
 
 
 @njit(cache=True)
 def _covb_force(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, d2: np.ndarray, r: float,
+    mode: np.ndarray, r: float,
 ) -> tuple[float, float]:
     """Unit direction of Eq. 6: own heading / r plus a 1/d push from each drone within r."""
     n = hx.shape[0]
@@ -186,12 +230,14 @@ def _covb_force(
     for j in range(n):
         if j == i or mode[j] == LANDED:
             continue
-        dd = d2[i, j]
+        dx = px[i] - px[j]
+        dy = py[i] - py[j]
+        dd = dx * dx + dy * dy
         if dd <= r2:
             neighbours = True
             if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
-                fx += (px[i] - px[j]) / dd
-                fy += (py[i] - py[j]) / dd
+                fx += dx / dd
+                fy += dy / dd
     if not neighbours:
         return hx[i], hy[i]
     return _unit(fx, fy, hx[i], hy[i])
@@ -217,14 +263,14 @@ def _conb_force(
     route to the BS, if any) would be when the contact ends.
     """
     n = hx.shape[0]
-    if routed_next[i]:
+    if _has(routed_next, i):
         return hx[i], hy[i]
     neighbours = False
     candidates = False
     for j in range(n + 1):
-        if j != i and adj[i, j]:
+        if _linked(adj, i, j):
             neighbours = True
-            candidates |= routed_next[j]
+            candidates |= _has(routed_next, j)
     if not neighbours:
         return hx[i], hy[i]
     rc2 = p.rc * p.rc
@@ -234,7 +280,7 @@ def _conb_force(
     best_d2 = np.inf
     best_tau = 0.0
     for j in range(n + 1):
-        if j == i or not adj[i, j] or (candidates and not routed_next[j]):
+        if not _linked(adj, i, j) or (candidates and not _has(routed_next, j)):
             continue
         vjx, vjy = _velocity(j, n, mode, hx, hy, p.speed)
         relx, rely = px[j] - px[i], py[j] - py[i]
@@ -263,8 +309,8 @@ def _conb_force(
 @njit(cache=True)
 def _predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
-    p: Params, qx: np.ndarray, qy: np.ndarray, d2: np.ndarray, thr2: np.ndarray,
-    adj: np.ndarray, out: np.ndarray, stack: np.ndarray,
+    p: Params, qx: np.ndarray, qy: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
+    out: np.ndarray, stack: np.ndarray,
 ) -> None:
     """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range)."""
     n = hx.shape[0]
@@ -274,8 +320,7 @@ def _predict_routes(
         if j < n and mode[j] != LANDED:
             qx[j] += ahead * hx[j]
             qy[j] += ahead * hy[j]
-    _distances(qx, qy, d2)
-    _links(d2, thr2, n, p.altitude * p.altitude, adj)
+    _links(qx, qy, n, False, thr2, p.rc * p.rc, p.altitude * p.altitude, adj)
     _bs_component(adj, n, out, stack)
 
 
@@ -331,7 +376,7 @@ def simulate_kernel(
     """
     n = pos0.shape[0]
     m = n + 2
-    bs, tg = n, n + 1
+    bs, tg = n, n + 1  # node indices of the BS and the target
     px = np.empty(m)
     py = np.empty(m)
     hx = np.empty(n)
@@ -355,19 +400,18 @@ def simulate_kernel(
     in_range = np.zeros(n, dtype=np.bool_)
     pass_start = np.zeros(n, dtype=np.int64)
 
-    d2 = np.empty((m, m))
-    thr2 = np.full((m, m), p.rc * p.rc)
-    adj = np.empty((m, m), dtype=np.bool_)
-    routed = np.empty(n + 1, dtype=np.bool_)
-    flood = np.empty(n + 1, dtype=np.bool_)
+    nw = (m + 63) // 64
+    shadowed = p.sigma > 0.0
+    thr2 = np.full((m, m) if shadowed else (0, 0), p.rc * p.rc)
+    adj = np.zeros((m, nw), dtype=np.uint64)
+    routed = np.zeros(nw, dtype=np.uint64)
+    flood = np.zeros(nw, dtype=np.uint64)
     stack = np.empty(m, dtype=np.int64)
-    # prediction buffers (shadow-free ranges)
+    # prediction buffers (shadow-free ranges: a drone cannot foresee fading)
     qx = np.empty(m)
     qy = np.empty(m)
-    qd2 = np.empty((m, m))
-    qthr2 = np.full((m, m), p.rc * p.rc)
-    qadj = np.empty((m, m), dtype=np.bool_)
-    routed_next = np.empty(n + 1, dtype=np.bool_)
+    qadj = np.zeros((m, nw), dtype=np.uint64)
+    routed_next = np.zeros(nw, dtype=np.uint64)
     nhx = np.empty(n)
     nhy = np.empty(n)
 
@@ -388,6 +432,7 @@ def simulate_kernel(
     detector = -1
     immediate = False
     r2 = p.r * p.r
+    rc2 = p.rc * p.rc
     h2 = p.altitude * p.altitude
     step = p.speed * p.dt
 
@@ -398,11 +443,11 @@ def simulate_kernel(
             conn_cum[ci] = acc_conn
             ci += 1
         # ---- observe: sense, link, flood, notify, account ----
-        if p.sigma > 0.0 and k % p.coherence_steps == 0:
+        if shadowed and k % p.coherence_steps == 0:
             _draw_shadowing(thr2, p, rng_shadow)
-        _distances(px, py, d2)
         for i in range(n):
-            now_in = d2[i, tg] <= r2
+            dx, dy = px[i] - target_x, py[i] - target_y
+            now_in = dx * dx + dy * dy <= r2
             if now_in:
                 look = not in_range[i]
                 if look:
@@ -415,30 +460,33 @@ def simulate_kernel(
                         t_det = t
                         detector = i
             in_range[i] = now_in
-        _links(d2, thr2, n, h2, adj)
+        _links(px, py, n, shadowed, thr2, rc2, h2, adj)
         _bs_component(adj, n, routed, stack)
         if t_det >= 0.0:
-            flood[:n] = knows
-            flood[bs] = False
-            _spread(adj, n + 1, flood, stack)
-            knows[:] = flood[:n]
-            if t_not < 0.0 and flood[bs]:
+            flood[:] = 0
+            for i in range(n):
+                if knows[i]:
+                    _add(flood, i)
+            _component(adj, tg, flood, stack)
+            for i in range(n):
+                knows[i] = _has(flood, i)
+            if t_not < 0.0 and _has(flood, bs):
                 t_not = t
                 immediate = t_not == t_det
-        reachable = adj[tg, bs]
+        reachable = _linked(adj, tg, bs)
         connected = 0
         for i in range(n):
-            if routed[i]:
+            if _has(routed, i):
                 connected += 1
-                if adj[tg, i]:
+                if _linked(adj, tg, i):
                     reachable = True
         if p.record:
             for i in range(n):
                 traj_pos[k, i, 0] = px[i]
                 traj_pos[k, i, 1] = py[i]
                 traj_head[k, i] = math.atan2(hy[i], hx[i])
+                traj_route[k, i] = _has(routed, i)
             traj_knows[k] = knows
-            traj_route[k] = routed[:n]
             traj_mode[k] = mode
         if k == p.n_steps:
             break
@@ -462,10 +510,10 @@ def simulate_kernel(
                 cx, cy = hx[i], hy[i]
                 vx, vy = hx[i], hy[i]
                 if p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0):
-                    cx, cy = _covb_force(i, px, py, hx, hy, mode, d2, p.r)
+                    cx, cy = _covb_force(i, px, py, hx, hy, mode, p.r)
                 if p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0):
                     if not predicted:
-                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, qd2, qthr2, qadj,
+                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, thr2, qadj,
                                         routed_next, stack)
                         predicted = True
                     vx, vy = _conb_force(i, px, py, hx, hy, mode, adj, routed_next, p)

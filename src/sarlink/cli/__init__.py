@@ -1,0 +1,19 @@
+"""The ``sarlink`` command line. Each command lives in a module of its own."""
+
+import typer
+
+from sarlink.cli.simulate import simulate
+
+app = typer.Typer(
+    name="sarlink",
+    help="Plan and simulate search-and-rescue drone teams that must notify their base station.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+app.command()(simulate)
+
+
+@app.callback()
+def main() -> None:
+    """Plan and simulate search-and-rescue drone teams that must notify their base station."""

@@ -1,0 +1,84 @@
+"""``sarlink simulate``: one run, summarised, as JSON, or as a figure."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.table import Table
+
+from sarlink.cli.common import build_mission, console, print_json, user_errors
+from sarlink.engine import simulate as run_simulation
+from sarlink.planners import get_planner
+
+
+def simulate(
+    planner: Annotated[str | None, typer.Option(help="covb, conb, concov, mtsp, mtsp-conb")] = None,
+    drones: Annotated[int | None, typer.Option(help="number of drones N_m")] = None,
+    rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
+    seed: Annotated[int, typer.Option(help="experiment seed")] = 0,
+    run: Annotated[int, typer.Option(help="run index within the experiment")] = 0,
+    alpha: Annotated[float | None, typer.Option(help="ConCov coverage weight")] = None,
+    nr: Annotated[int | None, typer.Option(help="mTSP-ConB: drones flying the plan")] = None,
+    td: Annotated[float | None, typer.Option(help="target duration t_d = horizon, s")] = None,
+    r: Annotated[float | None, typer.Option(help="sensing range r, m")] = None,
+    p_miss: Annotated[float | None, typer.Option(help="miss probability per look")] = None,
+    look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
+    shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
+    pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
+    config: Annotated[Path | None, typer.Option(help="mission TOML file; flags override it")] = None,
+    json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
+    plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
+) -> None:
+    """Simulate one mission run and report detection, notification and reachability."""
+    with user_errors():
+        mission = build_mission(
+            config, planner=planner, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
+            p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
+        )
+        result = run_simulation(mission, seed=seed, run=run, trajectory=plot is not None)
+    out = {
+        "planner": mission.team.planner,
+        "drones": mission.team.drones,
+        "rc": mission.channel.rc,
+        "td": mission.timing.horizon,
+        "seed": seed,
+        "run": run,
+        "target": list(result.target),
+        "t_detect": result.t_detect,
+        "t_notify": result.t_notify,
+        "immediate": result.immediate,
+        "detector": result.detector,
+        "t_reachable": result.t_reachable(),
+        "connected_fraction": result.connected_fraction(),
+    }
+    if plot is not None:
+        import matplotlib.pyplot as plt
+
+        from sarlink.plots import plot_run
+
+        ax = plot_run(result, mission)
+        ax.figure.savefig(plot, dpi=150)
+        plt.close(ax.figure)
+    if json:
+        print_json(out)
+        return
+    label = get_planner(mission.team.planner).label
+    table = Table(title=f"{label}: {mission.team.drones} drones, r_c = {mission.channel.rc:g} m, "
+                        f"t_d = {mission.timing.horizon:g} s (seed {seed}, run {run})")
+    table.add_column("outcome")
+    table.add_column("value", justify="right")
+    never = "[dim]not within t_d[/]"
+    table.add_row("target at", f"({result.target[0]:.0f}, {result.target[1]:.0f}) m")
+    table.add_row("detected at", never if result.t_detect is None else
+                  f"{result.t_detect:g} s by drone {result.detector}")
+    table.add_row("BS notified at", never if result.t_notify is None else f"{result.t_notify:g} s")
+    table.add_row("mission success", "yes" if result.notified() else "no")
+    table.add_row("immediate notification", "yes" if result.immediate else "no")
+    table.add_row("target reachable", f"{out['t_reachable']:g} s "
+                  f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
+    table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
+    console.print(table)
+    if plot is not None:
+        console.print(f"figure written to {plot}")

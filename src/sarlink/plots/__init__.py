@@ -1,0 +1,5 @@
+"""Figures. Functions take ``ax: plt.Axes | None`` and return the axes they drew on."""
+
+from sarlink.plots.run import plot_run
+
+__all__ = ["plot_run"]
