@@ -1,0 +1,29 @@
+# Two entry points for a fresh machine with Python 3.11 and pip: `make demo` and `make test`.
+# Each creates the virtual environment it needs (.venv) on first use.
+PYTHON ?= python3
+VENV ?= .venv
+BIN := $(VENV)/bin
+
+.PHONY: demo test lint bench clean
+
+$(BIN)/sarlink: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	touch $@
+
+demo: $(BIN)/sarlink
+	$(BIN)/sarlink simulate --planner concov --drones 10 --rc 1000 --seed 7 --plot mission.png
+
+lint: $(BIN)/sarlink
+	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/mypy
+
+test: lint
+	$(BIN)/pytest -q
+
+bench: $(BIN)/sarlink
+	$(BIN)/python benchmarks/bench_engine.py --out benchmarks/results/engine.md
+
+clean:
+	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis
