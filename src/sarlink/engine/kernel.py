@@ -175,37 +175,34 @@ def _links(
 
 
 @njit(cache=True)
-def _spread(adj: np.ndarray, reached: np.ndarray, stack: np.ndarray) -> None:
-    """Add to ``reached`` every node connected to a node already in it (in place)."""
-    top = 0
-    for w in range(reached.shape[0]):
-        bits = reached[w]
-        while bits:
-            low = bits & (~bits + _ONE)
-            stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
-            top += 1
-            bits ^= low
-    while top > 0:
-        top -= 1
-        a = stack[top]
-        for w in range(reached.shape[0]):
-            new = adj[a, w] & ~reached[w]
-            reached[w] |= new
-            while new:
-                low = new & (~new + _ONE)
-                stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
-                top += 1
-                new ^= low
+def _push_new(stack: np.ndarray, top: int, w: int, bits: np.uint64) -> int:
+    """Push the node index of every set bit of word ``w``; return the new stack top."""
+    while bits:
+        low = bits & (~bits + _ONE)
+        stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
+        top += 1
+        bits ^= low
+    return top
 
 
 @njit(cache=True)
 def _component(adj: np.ndarray, tg: int, out: np.ndarray, stack: np.ndarray) -> None:
     """Grow the node set ``out`` to everything linked to it, never routing through the target.
 
-    The target (node ``tg``) is a leaf: it is marked while spreading, then removed.
+    The target (node ``tg``) is a leaf: it is marked as reached after the seeds are taken, so
+    the search never expands it, and removed at the end.
     """
+    top = 0
+    for w in range(out.shape[0]):
+        top = _push_new(stack, top, w, out[w])
     _add(out, tg)
-    _spread(adj, out, stack)
+    while top > 0:
+        top -= 1
+        a = stack[top]
+        for w in range(out.shape[0]):
+            new = adj[a, w] & ~out[w]
+            out[w] |= new
+            top = _push_new(stack, top, w, new)
     out[tg >> 6] &= ~(_ONE << np.uint64(tg & 63))
 
 

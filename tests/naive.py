@@ -1,0 +1,266 @@
+"""A slow, obvious reference of the mission model (MODEL.md), in plain Python.
+
+Written from the model's text, not from the kernel: angles instead of unit vectors, sets and
+a breadth-first search instead of bitsets, one function per rule. It draws its random numbers
+from the same per-purpose streams in the same order as the engine, so the two can be compared
+run by run as well as statistically. Distributed planners only (no mTSP routes).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass
+
+from sarlink.config import Mission
+from sarlink.engine.streams import run_streams
+
+
+@dataclass
+class NaiveResult:
+    t_detect: float | None
+    t_notify: float | None
+    immediate: bool
+    t_reachable: float
+    connected_time: float
+    positions: list[list[tuple[float, float]]]
+
+
+def _dist(p: tuple[float, float], q: tuple[float, float]) -> float:
+    return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+def _within(p: tuple[float, float], q: tuple[float, float], limit: float, h: float = 0.0) -> bool:
+    """``|p - q| <= limit``, compared squared: drones often sit at exactly ``r`` or ``r_c``
+    (they take off radially at a whole number of metres per step), and the squared form is
+    the one the engine uses."""
+    return (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 + h * h <= limit * limit
+
+
+def _inside(p: tuple[float, float], a: float) -> bool:
+    return 0 <= p[0] <= a and 0 <= p[1] <= a
+
+
+def _component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[int]:
+    """All nodes linked to ``start``, never passing through ``blocked``."""
+    seen = set(start)
+    queue = deque(start)
+    while queue:
+        a = queue.popleft()
+        for b in links[a]:
+            if b not in seen and b != blocked:
+                seen.add(b)
+                queue.append(b)
+    return seen
+
+
+def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) -> NaiveResult:
+    a = mission.area.size
+    bs = mission.area.bs_xy
+    n = mission.team.drones
+    v = mission.team.speed
+    dt = mission.timing.dt
+    ts = mission.timing.ts
+    r, rc = mission.sensing.r, mission.channel.rc
+    planner = mission.team.planner
+    alpha = {"covb": 1.0, "conb": 0.0}.get(planner, mission.team.alpha)
+    streams = run_streams(seed, run)
+    target = (streams.scenario.random() * a, streams.scenario.random() * a)
+    offset = streams.scenario.random() * 2 * math.pi
+    BS, TG = n, n + 1  # noqa: N806 - node names as in the model
+
+    pos = [bs] * n
+    heading = [2 * math.pi * k / n + offset for k in range(n)]
+    last_change = [0.0] * n
+    mode = ["search"] * n
+    knows = [False] * n
+    in_range = [False] * n
+    pass_start = [0.0] * n
+    shadow: dict[tuple[int, int], float] = {}
+    t_det: float | None = None
+    t_not: float | None = None
+    reach_time = conn_time = 0.0
+    steps = round(mission.timing.horizon / dt)
+    coherence = round(mission.coherence / dt)
+    positions = []
+
+    def node(j: int, where: list[tuple[float, float]]) -> tuple[float, float]:
+        return where[j] if j < n else (bs if j == BS else target)
+
+    def link_graph(where: list[tuple[float, float]], faded: bool) -> dict[int, set[int]]:
+        links: dict[int, set[int]] = {j: set() for j in range(n + 2)}
+        for i in range(n + 2):
+            for j in range(i + 1, n + 2):
+                p, q = node(i, where), node(j, where)
+                h = mission.channel.altitude if (i < n) != (j < n) else 0.0
+                if faded and mission.channel.sigma > 0:
+                    d = math.hypot(_dist(p, q), h)
+                    ok = 10 * mission.channel.pathloss_exponent * math.log10(d / rc) + shadow[
+                        (i, j)] <= 0
+                else:
+                    ok = _within(p, q, rc, h)
+                if ok:
+                    links[i].add(j)
+                    links[j].add(i)
+        return links
+
+    def covb(i: int) -> float:
+        fx, fy = math.cos(heading[i]) / r, math.sin(heading[i]) / r
+        near = [j for j in range(n) if j != i and mode[j] != "landed"
+                and _within(pos[i], pos[j], r)]
+        if not near:
+            return heading[i]
+        for j in near:
+            d = _dist(pos[i], pos[j])
+            if d >= 1:  # pairs closer than 1 m exert no force
+                fx += (pos[i][0] - pos[j][0]) / d / d
+                fy += (pos[i][1] - pos[j][1]) / d / d
+        return math.atan2(fy, fx)
+
+    def velocity(j: int) -> tuple[float, float]:
+        if j >= n or mode[j] == "landed":
+            return 0.0, 0.0
+        return v * math.cos(heading[j]), v * math.sin(heading[j])
+
+    def conb(i: int, links: dict[int, set[int]], routed_next: set[int]) -> float:
+        if i in routed_next:
+            return heading[i]
+        neighbours = sorted(j for j in links[i] if j != TG)
+        if not neighbours:
+            return heading[i]
+        candidates = [j for j in neighbours if j in routed_next] or neighbours
+        vi = velocity(i)
+
+        def contact(j: int) -> tuple[float, float, float]:
+            """(rank, -distance, time the contact ends)."""
+            pj = node(j, pos)
+            vj = velocity(j)
+            px, py = pj[0] - pos[i][0], pj[1] - pos[i][1]
+            wx, wy = vj[0] - vi[0], vj[1] - vi[1]
+            aa = wx * wx + wy * wy
+            if aa < 1e-12:
+                return math.inf, -math.hypot(px, py), mission.team.flight_time
+            b = 2 * (px * wx + py * wy)
+            c = px * px + py * py - rc * rc
+            disc = b * b - 4 * aa * c
+            tau = 0.0 if disc < 0 else max(0.0, (-b + math.sqrt(disc)) / (2 * aa))
+            return tau, -math.hypot(px, py), tau
+
+        j = max(candidates, key=lambda c: contact(c)[:2])
+        tau = contact(j)[2]
+        pj, vj = node(j, pos), velocity(j)
+        cx, cy = pj[0] + vj[0] * tau, pj[1] + vj[1] * tau
+        nx, ny = pos[i][0] + v * dt * math.cos(heading[i]), pos[i][1] + v * dt * math.sin(
+            heading[i])
+        theta_ij = heading[i] if math.hypot(cx - nx, cy - ny) < 1e-12 else math.atan2(cy - ny,
+                                                                                      cx - nx)
+        rx = math.cos(heading[i]) + math.cos(theta_ij)
+        ry = math.sin(heading[i]) + math.sin(theta_ij)
+        if math.hypot(rx, ry) < 1e-9:
+            return theta_ij
+        return math.atan2(ry, rx)
+
+    def inward(i: int, h: float) -> float:
+        """Boundary rule: a uniform heading in the half (quarter) circle facing into the area."""
+        walls: set[str] = set()
+        while True:
+            nxt = (pos[i][0] + v * dt * math.cos(h), pos[i][1] + v * dt * math.sin(h))
+            if _inside(nxt, a):
+                return h
+            walls |= {w for w, out in (("W", nxt[0] < 0), ("E", nxt[0] > a), ("S", nxt[1] < 0),
+                                       ("N", nxt[1] > a)) if out}
+            arcs = {"W": (-math.pi / 2, math.pi / 2), "E": (math.pi / 2, 3 * math.pi / 2),
+                    "S": (0.0, math.pi), "N": (math.pi, 2 * math.pi)}
+            corners = {frozenset("WS"): (0.0, math.pi / 2), frozenset("WN"): (-math.pi / 2, 0.0),
+                       frozenset("ES"): (math.pi / 2, math.pi),
+                       frozenset("EN"): (math.pi, 3 * math.pi / 2)}
+            lo, hi = corners[frozenset(walls)] if len(walls) == 2 else arcs[next(iter(walls))]
+            h = lo + streams.turn.random() * (hi - lo)
+
+    for k in range(steps + 1):
+        t = k * dt
+        # observe
+        if mission.channel.sigma > 0 and k % coherence == 0:
+            for i in range(n + 2):
+                for j in range(i + 1, n + 2):
+                    shadow[(i, j)] = mission.channel.sigma * streams.shadow.standard_normal()
+        for i in range(n):
+            now_in = _within(pos[i], target, r)
+            if now_in:
+                look = not in_range[i]
+                if look:
+                    pass_start[i] = t
+                elif mission.sensing.look == "per-period" and round((t - pass_start[i]) / dt) % \
+                        round(ts / dt) == 0:
+                    look = True
+                if look and streams.look.random() >= mission.sensing.p_miss:
+                    knows[i] = True
+                    if t_det is None:
+                        t_det = t
+            in_range[i] = now_in
+        links = link_graph(pos, faded=True)
+        routed = _component({BS}, links, blocked=TG)
+        informed = _component({i for i in range(n) if knows[i]}, links, blocked=TG)
+        for i in informed - {BS}:
+            knows[i] = True
+        if t_not is None and BS in informed:
+            t_not = t
+        if record:
+            positions.append(list(pos))
+        if k == steps:
+            break
+        if any(j in routed for j in links[TG]):
+            reach_time += dt
+        conn_time += dt * sum(1 for i in range(n) if i in routed) / n
+
+        # decide
+        new = list(heading)
+        routed_next: set[int] | None = None
+        for i in range(n):
+            if mode[i] != "search":
+                continue
+            home = _dist(pos[i], bs)
+            if (mission.team.flight_time - t) - home / v < 2 * dt:
+                mode[i] = "returning"
+                if home > 0:
+                    new[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
+                continue
+            h = heading[i]
+            if t - last_change[i] >= ts - 1e-9:
+                last_change[i] = t
+                cov = covb(i) if alpha > 0 else h
+                con = h
+                if alpha < 1:
+                    if routed_next is None:
+                        ahead = [p if mode[j] == "landed" else
+                                 (p[0] + v * ts * math.cos(heading[j]),
+                                  p[1] + v * ts * math.sin(heading[j])) for j, p in enumerate(pos)]
+                        routed_next = _component({BS}, link_graph(ahead, faded=False), blocked=TG)
+                    con = conb(i, links, routed_next)
+                if alpha == 1:
+                    h = cov
+                elif alpha == 0:
+                    h = con
+                else:
+                    rx = alpha * math.cos(cov) + (1 - alpha) * math.cos(con)
+                    ry = alpha * math.sin(cov) + (1 - alpha) * math.sin(con)
+                    h = h if math.hypot(rx, ry) < 1e-12 else math.atan2(ry, rx)
+            h2 = inward(i, h)
+            if h2 != h:
+                last_change[i] = t
+            new[i] = h2
+        heading = new
+
+        # move
+        for i in range(n):
+            if mode[i] == "landed":
+                continue
+            if mode[i] == "returning" and _dist(pos[i], bs) <= v * dt:
+                pos[i] = bs
+                mode[i] = "landed"
+                continue
+            pos[i] = (pos[i][0] + v * dt * math.cos(heading[i]),
+                      pos[i][1] + v * dt * math.sin(heading[i]))
+
+    immediate = t_not is not None and t_not == t_det
+    return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions)
