@@ -95,8 +95,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                 h = mission.channel.altitude if (i < n) != (j < n) else 0.0
                 if faded and mission.channel.sigma > 0:
                     d = math.hypot(_dist(p, q), h)
-                    ok = 10 * mission.channel.pathloss_exponent * math.log10(d / rc) + shadow[
-                        (i, j)] <= 0
+                    ok = d == 0 or 10 * mission.channel.pathloss_exponent * math.log10(
+                        d / rc) + shadow[(i, j)] <= 0
                 else:
                     ok = _within(p, q, rc, h)
                 if ok:
