@@ -1,0 +1,57 @@
+"""The ``sarlink`` command line, driven as a user would."""
+
+from __future__ import annotations
+
+import json
+
+from typer.testing import CliRunner
+
+from sarlink import Mission, simulate
+from sarlink.cli import app
+
+runner = CliRunner()
+
+
+def test_simulate_json_reports_the_run_of_the_api() -> None:
+    out = runner.invoke(app, ["simulate", "--planner", "concov", "--drones", "10", "--rc", "1000",
+                              "--seed", "7", "--alpha", "0.3", "--td", "3000", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    expected = simulate(Mission.build(planner="concov", drones=10, rc=1000.0, alpha=0.3,
+                                      horizon=3000.0), seed=7)
+    assert data["t_detect"] == expected.t_detect
+    assert data["t_notify"] == expected.t_notify
+    assert data["immediate"] is expected.immediate
+    assert data["t_reachable"] == expected.t_reachable()
+
+
+def test_simulate_json_has_null_when_nothing_happened() -> None:
+    out = runner.invoke(app, ["simulate", "--planner", "covb", "--drones", "1", "--td", "10",
+                              "--seed", "1", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    assert data["t_notify"] is None and data["immediate"] is False
+
+
+def test_simulate_summary_and_plot(tmp_path) -> None:
+    png = tmp_path / "mission.png"
+    out = runner.invoke(app, ["simulate", "--planner", "conb", "--plot", str(png)])
+    assert out.exit_code == 0, out.output
+    assert "BS notified at" in out.stdout and "ConB" in out.stdout
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_simulate_reads_a_mission_file_and_flags_override_it(tmp_path) -> None:
+    cfg = tmp_path / "m.toml"
+    cfg.write_text('[team]\nplanner = "conb"\ndrones = 4\n[timing]\nhorizon = 500\n')
+    out = runner.invoke(app, ["simulate", "--config", str(cfg), "--drones", "5", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    assert (data["planner"], data["drones"], data["td"]) == ("conb", 5, 500.0)
+
+
+def test_bad_input_is_one_clear_line_and_exit_code_2() -> None:
+    out = runner.invoke(app, ["simulate", "--drones", "0"])
+    assert out.exit_code == 2
+    assert "team.drones" in out.output and "greater than or equal to 1" in out.output
+    assert "Traceback" not in out.output

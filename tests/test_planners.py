@@ -1,0 +1,35 @@
+"""The planner registry matches the modules on disk, and every planner flies."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import sarlink.planners as planners_pkg
+from sarlink import Mission, get_planner, planner_names, simulate
+from sarlink.planners import PLANNERS
+
+
+def test_registry_matches_the_planner_modules_on_disk() -> None:
+    folder = Path(planners_pkg.__file__).parent
+    modules = {p.stem.replace("_", "-") for p in folder.glob("*.py")} - {"--init--", "base"}
+    assert set(planner_names()) == modules
+
+
+def test_unknown_planner_is_a_clear_error() -> None:
+    with pytest.raises(KeyError, match="unknown planner 'nope'; known: covb"):
+        get_planner("nope")
+
+
+@pytest.mark.parametrize("name", list(PLANNERS))
+def test_every_planner_flies_a_mission(name: str) -> None:
+    mission = Mission.build(planner=name, drones=8, horizon=600.0)
+    steering = get_planner(name).steering(mission)
+    assert len(steering.routes) <= mission.team.drones
+    result = simulate(mission, seed=0, trajectory=True)
+    assert result.trajectory is not None
+    assert np.isfinite(result.trajectory.positions).all()
+    moved = np.linalg.norm(result.trajectory.positions[-1] - result.trajectory.positions[0], axis=1)
+    assert (moved > 0).any()
