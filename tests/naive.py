@@ -67,7 +67,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     streams = run_streams(seed, run)
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
-    BS, TG = n, n + 1  # noqa: N806 - node names as in the model
+    BS, TG = n, n + 1
 
     pos = [bs] * n
     heading = [2 * math.pi * k / n + offset for k in range(n)]

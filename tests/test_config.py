@@ -41,7 +41,7 @@ def test_bad_values_name_the_field_and_the_range(params: dict, field: str, allow
 
 
 def test_unknown_parameter_lists_the_known_ones() -> None:
-    with pytest.raises(ConfigError, match="unknown mission parameter 'drone'.*drones"):
+    with pytest.raises(ConfigError, match=r"unknown mission parameter 'drone'.*drones"):
         Mission.build(drone=3)
 
 
@@ -61,5 +61,5 @@ def test_toml_file_is_checked(tmp_path) -> None:
     assert (m.team.planner, m.team.drones, m.channel.rc) == ("concov", 22, 500)
     bad = tmp_path / "bad.toml"
     bad.write_text("[team]\ndrones = 22\nspeeed = 4\n")
-    with pytest.raises(ConfigError, match="team.speeed: Extra inputs are not permitted"):
+    with pytest.raises(ConfigError, match=r"team\.speeed: Extra inputs are not permitted"):
         Mission.from_toml(bad)

@@ -38,7 +38,8 @@ def test_engine_agrees_with_the_reference(case: str) -> None:
     fast = [simulate(mission, seed=2024, run=k) for k in range(RUNS)]
     slow = [simulate_naive(mission, 2024, k) for k in range(RUNS)]
 
-    same = sum((f.t_detect, f.t_notify) == (s.t_detect, s.t_notify) for f, s in zip(fast, slow))
+    pairs = zip(fast, slow, strict=True)
+    same = sum((f.t_detect, f.t_notify) == (s.t_detect, s.t_notify) for f, s in pairs)
     assert same >= 0.75 * RUNS
 
     for td in (250.0, 500.0, 1000.0):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 from rich.table import Table
@@ -38,7 +38,7 @@ def simulate(
             p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
         )
         result = run_simulation(mission, seed=seed, run=run, trajectory=plot is not None)
-    out = {
+    out: dict[str, Any] = {
         "planner": mission.team.planner,
         "drones": mission.team.drones,
         "rc": mission.channel.rc,
@@ -58,9 +58,10 @@ def simulate(
 
         from sarlink.plots import plot_run
 
-        ax = plot_run(result, mission)
-        ax.figure.savefig(plot, dpi=150)
-        plt.close(ax.figure)
+        fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
+        plot_run(result, mission, ax=ax)
+        fig.savefig(plot, dpi=150)
+        plt.close(fig)
     if json:
         print_json(out)
         return

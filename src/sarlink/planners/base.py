@@ -36,10 +36,15 @@ class Steering:
 class Planner(Protocol):
     """A path planner, registered by name in :mod:`sarlink.planners`."""
 
-    name: str
-    """Registry key used in configs and the CLI (``covb``)."""
-    label: str
-    """Name as the paper writes it (``CovB``)."""
+    @property
+    def name(self) -> str:
+        """Registry key used in configs and the CLI (``covb``)."""
+        ...
+
+    @property
+    def label(self) -> str:
+        """Name as the paper writes it (``CovB``)."""
+        ...
 
     def steering(self, mission: Mission) -> Steering:
         """What the engine needs to fly ``mission`` with this planner."""
