@@ -236,8 +236,10 @@ class Mission(_Model):
 
 def param_groups() -> dict[str, str]:
     """Flat parameter name -> the group that holds it."""
-    models: dict[str, type[BaseModel]] = {"area": Area, "team": Team, "sensing": Sensing, "channel": Channel,
-              "timing": Timing, "mtsp": Mtsp}
+    models: dict[str, type[BaseModel]] = {
+        "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
+        "mtsp": Mtsp,
+    }
     return {field: group for group, model in models.items() for field in model.model_fields}
 
 

@@ -27,7 +27,7 @@ def simulate(
     look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
     shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
     pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
-    config: Annotated[Path | None, typer.Option(help="mission TOML file; flags override it")] = None,
+    config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
 ) -> None:
