@@ -1,0 +1,73 @@
+"""Engine speed: drone-steps per second per core, and the speed-up over the slow reference.
+
+Full 4000 s runs of the paper's setting, r_c = 1000 m, one process, CPU time. Run with
+
+    python benchmarks/bench_engine.py --out benchmarks/results/engine.md
+
+Targets (issue 2): CovB >= 15 M and ConB >= 8 M drone-steps/s/core at N = 22; >= 200x the
+reference. The reference is timed on a few runs; the engine on the same runs and more.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from naive import simulate_naive  # noqa: E402
+
+from sarlink import Mission, prepare  # noqa: E402
+
+
+def cpu_seconds_per_run(fn, runs: range) -> float:  # type: ignore[no-untyped-def]
+    start = time.process_time()
+    for run in runs:
+        fn(run)
+    return (time.process_time() - start) / len(runs)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=200, help="engine runs per configuration")
+    parser.add_argument("--reference-runs", type=int, default=2)
+    parser.add_argument("--out", type=Path, default=None, help="write a Markdown table here")
+    args = parser.parse_args()
+
+    rows = []
+    for planner in ("covb", "conb"):
+        for drones in (10, 22):
+            mission = Mission.build(planner=planner, drones=drones, rc=1000.0)
+            prepared = prepare(mission)
+            prepared.run(0, 0)  # compile or load the cache outside the timing
+            steps = mission.n_steps * drones
+            engine = cpu_seconds_per_run(lambda k: prepared.run(1, k), range(args.runs))
+            same = range(args.reference_runs)
+            engine_same = cpu_seconds_per_run(lambda k: prepared.run(1, k), same)
+            slow = cpu_seconds_per_run(lambda k: simulate_naive(mission, 1, k), same)
+            rows.append((planner, drones, steps / engine / 1e6, engine * 1e3, slow,
+                         slow / engine_same))
+            print(f"{planner:6s} N={drones:2d}: {rows[-1][2]:6.2f} M drone-steps/s/core, "
+                  f"{rows[-1][3]:6.2f} ms/run, reference {slow:.2f} s/run, "
+                  f"speed-up {rows[-1][5]:.0f}x", flush=True)
+
+    lines = [
+        f"Engine benchmark: `python benchmarks/bench_engine.py --runs {args.runs}` on "
+        f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
+        f"{time.strftime('%Y-%m-%d')}.",
+        "",
+        "| planner | N | M drone-steps/s/core | ms per 4000 s run | reference s/run | speed-up |",
+        "|---|---|---|---|---|---|",
+        *(f"| {p} | {n} | {rate:.2f} | {ms:.2f} | {slow:.2f} | {up:.0f}x |"
+          for p, n, rate, ms, slow, up in rows),
+    ]
+    if args.out:
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        args.out.write_text("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
