@@ -14,19 +14,20 @@ import argparse
 import platform
 import sys
 import time
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from naive import simulate_naive  # noqa: E402
+from naive import simulate_naive
+from sarlink import Mission, prepare
 
-from sarlink import Mission, prepare  # noqa: E402
 
-
-def cpu_seconds_per_run(fn, runs: range) -> float:  # type: ignore[no-untyped-def]
+def cpu_seconds_per_run(run_one: Callable[[int], object], runs: range) -> float:
     start = time.process_time()
     for run in runs:
-        fn(run)
+        run_one(run)
     return (time.process_time() - start) / len(runs)
 
 
@@ -44,10 +45,11 @@ def main() -> None:
             prepared = prepare(mission)
             prepared.run(0, 0)  # compile or load the cache outside the timing
             steps = mission.n_steps * drones
-            engine = cpu_seconds_per_run(lambda k: prepared.run(1, k), range(args.runs))
+            fast_run = partial(prepared.run, 1)
+            engine = cpu_seconds_per_run(fast_run, range(args.runs))
             same = range(args.reference_runs)
-            engine_same = cpu_seconds_per_run(lambda k: prepared.run(1, k), same)
-            slow = cpu_seconds_per_run(lambda k: simulate_naive(mission, 1, k), same)
+            engine_same = cpu_seconds_per_run(fast_run, same)
+            slow = cpu_seconds_per_run(partial(simulate_naive, mission, 1), same)
             rows.append((planner, drones, steps / engine / 1e6, engine * 1e3, slow,
                          slow / engine_same))
             print(f"{planner:6s} N={drones:2d}: {rows[-1][2]:6.2f} M drone-steps/s/core, "
