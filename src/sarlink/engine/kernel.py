@@ -266,7 +266,9 @@ def _conb_force(
 
     Keep the heading if drone ``i`` is predicted to reach the BS at ``t + t_s``; else steer
     towards where the neighbour with the longest contact (among those predicted to keep a
-    route to the BS, if any) would be when the contact ends.
+    route to the BS, if any) would be when the contact ends. A neighbour's route "without i"
+    is its route in the predicted graph: ``i`` is not in the BS's predicted component here, so
+    removing it changes nothing.
     """
     n = hx.shape[0]
     if _has(routed_next, i):
