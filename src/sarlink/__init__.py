@@ -2,8 +2,10 @@
 
 from sarlink.config import Area, Channel, ConfigError, Mission, Mtsp, Sensing, Team, Timing
 from sarlink.engine import Scenario, prepare, simulate
+from sarlink.experiments import Experiment, sweep
 from sarlink.planners import get_planner, planner_names
 from sarlink.result import RunResult, Trajectory
+from sarlink.storage import load
 
 __version__ = "0.1.0"
 
@@ -11,6 +13,7 @@ __all__ = [
     "Area",
     "Channel",
     "ConfigError",
+    "Experiment",
     "Mission",
     "Mtsp",
     "RunResult",
@@ -20,7 +23,9 @@ __all__ = [
     "Timing",
     "Trajectory",
     "get_planner",
+    "load",
     "planner_names",
     "prepare",
     "simulate",
+    "sweep",
 ]

@@ -3,6 +3,8 @@
 import typer
 
 from sarlink.cli.simulate import simulate
+from sarlink.cli.summarize import summarize
+from sarlink.cli.sweep import sweep
 
 app = typer.Typer(
     name="sarlink",
@@ -12,6 +14,8 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 app.command()(simulate)
+app.command()(sweep)
+app.command()(summarize)
 
 
 @app.callback()

@@ -1,0 +1,33 @@
+"""``sarlink sweep``: run an experiment file into a results folder, resuming what it holds."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from sarlink.cli.common import console, user_errors
+from sarlink.experiments import Experiment
+from sarlink.experiments import sweep as run_sweep
+
+
+def sweep(
+    experiment: Annotated[Path, typer.Argument(help="experiment TOML file")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="results folder, created or resumed")],
+    workers: Annotated[int | None, typer.Option(
+        help="worker processes (local pool or --dask-local); default: one per core")] = None,
+    scheduler: Annotated[str | None, typer.Option(
+        help="address of a running Dask scheduler, tcp://host:port")] = None,
+    dask_local: Annotated[bool, typer.Option(
+        "--dask-local", help="run on a Dask LocalCluster instead of the process pool")] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress, no summary")] = False,
+) -> None:
+    """Run every grid point of an experiment; an interrupted sweep resumes where it stopped."""
+    with user_errors():
+        exp = Experiment.from_toml(experiment)
+        runs = run_sweep(exp, out, workers=workers, scheduler=scheduler, dask_local=dask_local,
+                         progress=not quiet)
+    if not quiet:
+        console.print(f"{len(runs)} runs of {runs['point'].nunique()} grid points in {out}; "
+                      f"see them with `sarlink summarize {out}`", highlight=False)

@@ -1,0 +1,234 @@
+"""The paper's measures, read from run event times for any target duration ``t_d``.
+
+A run records when things happened (detection, notification, cumulative reachability), not
+whether they happened by one ``t_d``, so every ``t_d`` up to the horizon is read from the same
+runs (MODEL.md, Metrics). Probabilities come with 95% Wilson score intervals, means with
+standard errors. Everything is computed on whole columns: group ids from pandas, sums per
+group with ``np.bincount``.
+
+The input is a table of runs as :func:`sarlink.load` returns it. The columns used are
+``t_detect`` and ``t_notify`` (NaN when the event did not happen), and for reachability and
+connectivity ``reach_cum``, ``connected_cum``, ``horizon`` and ``checkpoint``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import pandas as pd
+
+from sarlink.config import param_groups
+
+__all__ = ["Z95", "success_curve", "summarize", "varying_params", "wilson"]
+
+Z95 = 1.959963984540054
+"""The standard normal quantile of 0.975: two-sided 95% intervals."""
+
+
+def wilson(successes: np.ndarray | float, trials: np.ndarray | float,
+           z: float = Z95) -> tuple[np.ndarray, np.ndarray]:
+    """The Wilson score interval of a binomial proportion (NaN where ``trials`` is 0).
+
+    Chosen over the normal (Wald) interval because it stays inside [0, 1] and keeps close to
+    its nominal coverage near 0 and 1, where success probabilities often lie; it is a few lines,
+    so no statistics package is needed. ``0`` successes give a lower bound of exactly 0 and
+    ``trials`` successes an upper bound of exactly 1.
+    """
+    k = np.asarray(successes, dtype=float)
+    n = np.asarray(trials, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = k / n
+        scale = 1 + z**2 / n
+        centre = (p + z**2 / (2 * n)) / scale
+        half = z * np.sqrt(p * (1 - p) / n + z**2 / (4 * n**2)) / scale
+    lo = np.where(k == 0, 0.0, centre - half)
+    hi = np.where(k == n, 1.0, centre + half)
+    return np.where(n > 0, lo, np.nan), np.where(n > 0, hi, np.nan)
+
+
+def varying_params(df: pd.DataFrame) -> list[str]:
+    """The mission parameters that take more than one value in ``df``: a sweep's grid."""
+    return [p for p in param_groups() if p in df.columns and df[p].nunique(dropna=False) > 1]
+
+
+def _groups(df: pd.DataFrame, by: Sequence[str] | None) -> tuple[np.ndarray, pd.DataFrame]:
+    """A group id per row (groups numbered in order of appearance) and each group's keys."""
+    if df.empty:
+        raise ValueError("no runs to summarise")
+    by = varying_params(df) if by is None else list(by)
+    if not by:
+        return np.zeros(len(df), dtype=np.int64), pd.DataFrame(index=range(1))
+    gid = df.groupby(by, sort=False, dropna=False).ngroup().to_numpy()
+    _, first = np.unique(gid, return_index=True)
+    return gid, df[by].iloc[first].reset_index(drop=True)
+
+
+def _cum_at(df: pd.DataFrame, column: str, td: np.ndarray) -> np.ndarray:
+    """A cumulative record (``reach_cum``, ``connected_cum``) of every run read at its ``td``.
+
+    Records are sampled every ``checkpoint`` seconds and at the horizon
+    (:class:`sarlink.RunResult`) and interpolated linearly in between, as
+    :meth:`sarlink.RunResult.t_reachable` does.
+    """
+    out = np.empty(len(df))
+    spacing = df[["horizon", "checkpoint"]].to_numpy(dtype=float)
+    combos, which = np.unique(spacing, axis=0, return_inverse=True)
+    for c, (horizon, checkpoint) in enumerate(combos):  # one pass per sampling, not per run
+        rows = np.flatnonzero(which.ravel() == c)
+        values = np.stack(df[column].to_numpy()[rows])
+        times = np.minimum(np.arange(values.shape[1]) * checkpoint, horizon)
+        if times[-1] != horizon or times[-2] == horizon:
+            raise ValueError(f"{column} has {values.shape[1]} values, which does not fit a "
+                             f"horizon of {horizon} s sampled every {checkpoint} s")
+        j = np.clip(np.searchsorted(times, td[rows], side="right") - 1, 0, len(times) - 2)
+        frac = (td[rows] - times[j]) / (times[j + 1] - times[j])
+        picked = values[np.arange(len(rows)), j]
+        out[rows] = picked + frac * (values[np.arange(len(rows)), j + 1] - picked)
+    return out
+
+
+def _td_per_run(df: pd.DataFrame, gid: np.ndarray, td: float | None) -> np.ndarray:
+    """``td`` for every run, checked against its horizon; None: its group's shortest horizon."""
+    horizon = df["horizon"].to_numpy(dtype=float)
+    if td is None:
+        shortest = np.full(gid.max() + 1, np.inf)
+        np.minimum.at(shortest, gid, horizon)
+        return shortest[gid]
+    if not td > 0:
+        raise ValueError(f"td must be positive, got {td}")
+    if td > horizon.min():
+        raise ValueError(f"td = {td:g} s is beyond the horizon ({horizon.min():g} s) of some "
+                         "runs: their events after it were not simulated")
+    return np.full(len(df), float(td))
+
+
+class _Sums:
+    """Per-group sums over the rows of a table."""
+
+    def __init__(self, gid: np.ndarray) -> None:
+        self.gid = gid
+        self.groups = int(gid.max()) + 1
+
+    def __call__(self, values: np.ndarray) -> np.ndarray:
+        return np.bincount(self.gid, weights=values.astype(float), minlength=self.groups)
+
+    def mean(self, values: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray,
+                                                                  np.ndarray]:
+        """The mean of ``values`` over the masked rows of each group, the rows' deviations from
+        it (0 elsewhere) and the count."""
+        count = self(mask)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mean = self(np.where(mask, values, 0.0)) / count
+        return mean, np.where(mask, values - mean[self.gid], 0.0), count
+
+    def covariance(self, dx: np.ndarray, dy: np.ndarray, count: np.ndarray) -> np.ndarray:
+        """Sample covariance from deviations (NaN for fewer than two rows)."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(count > 1, self(dx * dy) / (count - 1), np.nan)
+
+
+def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np.ndarray]:
+    """Every measure of every group at the per-run target durations ``td``."""
+    sums = _Sums(gid)
+    t_det = df["t_detect"].to_numpy(dtype=float)
+    t_not = df["t_notify"].to_numpy(dtype=float)
+    detected, notified = t_det <= td, t_not <= td
+    immediate = detected & (t_not == t_det)
+    n, k_d, k_s, k_i = sums(np.ones(len(df))), sums(detected), sums(notified), sums(immediate)
+    out: dict[str, np.ndarray] = {"td": np.bincount(gid, weights=td) / n, "runs": n.astype(int),
+                                  "detected": k_d.astype(int), "notified": k_s.astype(int)}
+    for name, k, trials in (("P_d", k_d, n), ("P_s", k_s, n), ("immediate", k_i, k_d)):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[name] = k / trials
+        out[f"{name}_lo"], out[f"{name}_hi"] = wilson(k, trials)
+
+    # mission time and search share over the runs notified within td; the share is a ratio of
+    # means, its standard error by the delta method:
+    # Var(x̄/ȳ) ≈ (s_x² - 2 R s_xy + R² s_y²) / (k ȳ²)
+    mean_det, dx, k = sums.mean(t_det, notified)
+    mean_not, dy, _ = sums.mean(t_not, notified)
+    var_det, var_not = sums.covariance(dx, dx, k), sums.covariance(dy, dy, k)
+    cov = sums.covariance(dx, dy, k)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        share = mean_det / mean_not
+        out["mission_time"], out["mission_time_se"] = mean_not, np.sqrt(var_not / k)
+        out["search_share"] = share
+        out["search_share_se"] = np.sqrt(
+            np.maximum(var_det - 2 * share * cov + share**2 * var_not, 0.0) / k) / mean_not
+
+    everyone = np.ones(len(df), dtype=bool)
+    for name, column in (("reachability", "reach_cum"), ("connected", "connected_cum")):
+        fraction = _cum_at(df, column, td) / td
+        mean, dev, _ = sums.mean(fraction, everyone)
+        out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
+    return out
+
+
+def summarize(df: pd.DataFrame, td: float | Sequence[float] | None = None,
+              by: Sequence[str] | None = None) -> pd.DataFrame:
+    """The paper's measures per group of runs and target duration ``t_d``.
+
+    Parameters
+    ----------
+    df
+        Runs, as :func:`sarlink.load` returns them.
+    td
+        Target durations, s; default: each group's horizon.
+    by
+        Columns that define a group; default: the mission parameters that vary in ``df``.
+
+    Returns
+    -------
+    One row per group and ``td``, groups in order of appearance: the group's keys, ``td``,
+    ``runs``, ``detected``, ``notified`` (counts within ``td``), then
+
+    - ``P_d``, ``P_s``: detection and mission success probabilities, ``Pr{t ≤ t_d}``;
+    - ``immediate``: ``Pr{t_notify = t_detect | t_detect ≤ t_d}``;
+    - ``mission_time``: mean ``t_notify`` of the runs notified within ``t_d``;
+    - ``search_share``: their mean ``t_detect`` over their mean ``t_notify``;
+    - ``reachability``: mean fraction of ``[0, t_d]`` in which the target had a route to the BS;
+    - ``connected``: mean fraction of drones with a route to the BS over ``[0, t_d]``;
+
+    with ``*_lo``/``*_hi`` (95% Wilson) beside probabilities and ``*_se`` beside means.
+    """
+    gid, keys = _groups(df, by)
+    tds: list[float | None] = [None] if td is None else list(np.atleast_1d(td).astype(float))
+    frames = []
+    for t in tds:
+        frame = pd.concat([keys, pd.DataFrame(_measures(df, gid, _td_per_run(df, gid, t)))],
+                          axis=1)
+        frame.insert(0, "_group", np.arange(len(keys)))
+        frames.append(frame)
+    out = pd.concat(frames, ignore_index=True).sort_values("_group", kind="stable")
+    return out.drop(columns="_group").reset_index(drop=True)
+
+
+def success_curve(df: pd.DataFrame, tds: Sequence[float] | np.ndarray,
+                  by: Sequence[str] | None = None) -> pd.DataFrame:
+    """Mission success ``P_s(t_d)`` over many ``t_d``, from the empirical CDF of ``t_notify``.
+
+    One set of runs gives the whole curve; it never decreases in ``t_d``. Columns: the group's
+    keys (``by`` as in :func:`summarize`), ``td``, ``runs``, ``P_s``, ``P_s_lo``, ``P_s_hi``.
+    """
+    gid, keys = _groups(df, by)
+    tds = np.asarray(tds, dtype=float)
+    if tds.ndim != 1 or not len(tds):
+        raise ValueError("tds must be a non-empty list of durations")
+    for t in (tds.min(), tds.max()):
+        _td_per_run(df, gid, float(t))
+    t_not = df["t_notify"].to_numpy(dtype=float)
+    order = np.lexsort((t_not, gid))  # by group, then time; NaN (never notified) last
+    n = np.bincount(gid)
+    starts = np.concatenate([[0], np.cumsum(n)[:-1]])
+    sorted_t = t_not[order]
+    # runs notified by td: position of td among the group's sorted times
+    k = np.stack([np.searchsorted(sorted_t[s:s + m], tds, side="right")
+                  for s, m in zip(starts, n, strict=True)])
+    lo, hi = wilson(k, n[:, None])
+    curve = pd.DataFrame({
+        "td": np.tile(tds, len(n)), "runs": np.repeat(n, len(tds)),
+        "P_s": (k / n[:, None]).ravel(), "P_s_lo": lo.ravel(), "P_s_hi": hi.ravel(),
+    })
+    return pd.concat([keys.loc[keys.index.repeat(len(tds))].reset_index(drop=True), curve],
+                     axis=1)

@@ -1,0 +1,349 @@
+"""Results on disk: one folder per experiment, one Parquet file per finished task.
+
+Layout of a results folder::
+
+    experiment.json                              manifest: experiment, identity, grid points
+    points/<point>/runs-000000-000050.parquet    runs 0 .. 49 of one grid point
+    .lock                                        held by the sweep writing the folder
+
+``<point>`` is a hash of the point's whole mission, and a file's name holds its run range, so
+a rerun recognises finished work whatever the grid order, chunk size or number of workers.
+Every file is written under a temporary name in its folder, flushed to disk and renamed, so a
+file with a final name is complete; damage done to it later is caught on reading (Parquet page
+checksums, the point and seed in its metadata, the exact run indices) and such a file is
+neither loaded nor counted as done.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import re
+import tempfile
+import types
+import typing
+import warnings
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager, suppress
+from dataclasses import dataclass
+from functools import cache
+from importlib.metadata import version
+from pathlib import Path
+from typing import IO, TYPE_CHECKING, Any, Literal
+
+import numpy as np
+import pandas as pd
+import pyarrow as pa
+import pyarrow.parquet as pq
+from pydantic import BaseModel
+
+from sarlink.config import ConfigError, Mission
+
+if TYPE_CHECKING:
+    from sarlink.experiments import Experiment
+
+__all__ = ["MANIFEST", "Point", "Store", "load", "mission_hash", "open_store", "read_manifest",
+           "run_table"]
+
+MANIFEST = "experiment.json"
+FORMAT = 1
+"""Version of the folder layout, stored in the manifest."""
+
+_FILE = re.compile(r"runs-(\d+)-(\d+)\.parquet")
+_POINT_KEY = b"sarlink.point"
+_SEED_KEY = b"sarlink.seed"
+
+
+def mission_hash(mission: Mission) -> str:
+    """A short content hash of every parameter of ``mission``: the name of its folder."""
+    return hashlib.sha256(mission.model_dump_json().encode()).hexdigest()[:16]
+
+
+def _file_name(runs: range) -> str:
+    return f"runs-{runs.start:06d}-{runs.stop:06d}.parquet"
+
+
+# -- tables ------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Column:
+    type: pa.DataType
+    optional: bool
+
+
+def _column(annotation: Any) -> _Column:
+    """The Parquet type of a parameter annotated ``annotation`` (None becomes a null)."""
+    origin, args = typing.get_origin(annotation), typing.get_args(annotation)
+    if origin in (typing.Union, types.UnionType) and type(None) in args:
+        (inner,) = (a for a in args if a is not type(None))
+        return _Column(_column(inner).type, optional=True)
+    if origin is Literal:
+        return _Column(pa.string(), optional=False)
+    if origin is tuple:
+        return _Column(pa.list_(_column(args[0]).type), optional=False)
+    simple = {bool: pa.bool_(), int: pa.int64(), float: pa.float64(), str: pa.string()}
+    if annotation not in simple:
+        raise TypeError(f"no Parquet type for mission parameters annotated {annotation}")
+    return _Column(simple[annotation], optional=False)
+
+
+@cache
+def _param_columns() -> dict[str, _Column]:
+    """Every flat mission parameter and its column type, declared rather than inferred so that
+    a parameter that is None in one file and set in another has one type in both."""
+    columns = {}
+    for group in Mission.model_fields.values():
+        model = typing.cast(type[BaseModel], group.annotation)
+        for name, field in model.model_fields.items():
+            columns[name] = _column(field.annotation)
+    return columns
+
+
+def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa.Table:
+    """Runs of ``mission`` as one tidy table: seed, run, every flat parameter, the outcomes.
+
+    ``rows`` are :meth:`sarlink.RunResult.row` records. The point's hash and the seed are kept
+    in the schema metadata, so a file can be checked against the folder it lies in.
+    """
+    outcomes = pa.Table.from_pylist(list(rows))
+    params = mission.params()
+    clash = set(params) & set(outcomes.column_names)
+    if clash:
+        raise ValueError(f"run outcomes and mission parameters share names: {sorted(clash)}")
+    n = outcomes.num_rows
+    columns = {
+        "seed": outcomes["seed"],
+        "run": outcomes["run"],
+        **{name: pa.repeat(pa.scalar(params[name], col.type), n)
+           for name, col in _param_columns().items()},
+        **{name: outcomes[name] for name in outcomes.column_names if name not in ("seed", "run")},
+    }
+    meta = {_POINT_KEY: mission_hash(mission).encode(), _SEED_KEY: str(seed).encode()}
+    return pa.table(columns).replace_schema_metadata(meta)
+
+
+def _problem(table: pa.Table, point: str, seed: int, runs: range) -> str | None:
+    """What makes ``table`` unfit to be runs ``runs`` of ``point`` under ``seed``, if anything."""
+    meta = table.schema.metadata or {}
+    if meta.get(_POINT_KEY) != point.encode():
+        return "it belongs to another grid point"
+    if meta.get(_SEED_KEY) != str(seed).encode():
+        return "it was made with another seed"
+    if "run" not in table.column_names or not np.array_equal(
+            table["run"].to_numpy(), np.arange(runs.start, runs.stop)):
+        return f"it does not hold exactly runs {runs.start} to {runs.stop - 1}"
+    return None
+
+
+def _read(path: Path, point: str, seed: int, runs: range) -> pa.Table | str:
+    """The table in ``path``, or why it cannot be used."""
+    try:
+        table = pq.read_table(path, page_checksum_verification=True)
+    except (OSError, ValueError, pa.ArrowException) as exc:
+        return f"it is unreadable ({exc})"
+    problem = _problem(table, point, seed, runs)
+    return table if problem is None else problem
+
+
+def _scan(folder: Path, point: str, seed: int) -> Iterator[tuple[Path, range, pa.Table | str]]:
+    """Every result file of a point, in run order, read and checked (temporary files ignored)."""
+    found = []
+    for path in folder.glob("runs-*.parquet"):
+        match = _FILE.fullmatch(path.name)
+        if match:
+            found.append((range(int(match[1]), int(match[2])), path))
+    found.sort(key=lambda f: (f[0].start, f[0].stop))
+    stop = 0
+    for runs, path in found:
+        result = _read(path, point, seed, runs)
+        if isinstance(result, pa.Table):
+            if runs.start < stop:
+                raise ConfigError(f"{path} overlaps another result file of its point; "
+                                  "the folder was changed by hand, remove one of them")
+            stop = runs.stop
+        yield path, runs, result
+
+
+# -- writing -----------------------------------------------------------------------------------
+
+
+def _write_atomic(path: Path, write: Callable[[IO[bytes]], object]) -> None:
+    """Write ``path`` whole or not at all: temporary file in the same folder, fsync, rename."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            write(fh)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        with suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+    if os.name == "posix":  # make the rename itself durable
+        folder = os.open(path.parent, os.O_RDONLY)
+        try:
+            os.fsync(folder)
+        finally:
+            os.close(folder)
+
+
+@dataclass(frozen=True)
+class Point:
+    """One grid point of an experiment: its grid values, mission and folder name."""
+
+    params: dict[str, Any]
+    mission: Mission
+    hash: str
+
+
+@dataclass(frozen=True)
+class Store:
+    """A results folder opened by :func:`open_store` for one sweep."""
+
+    root: Path
+    seed: int
+    points: list[Point]
+
+    def missing(self, point: Point, runs: int) -> list[range]:
+        """The run ranges of ``0 .. runs-1`` that ``point`` has no valid file for.
+
+        Unusable files are deleted (with a warning) so that their runs are done again.
+        """
+        gaps, start = [], 0
+        for path, span, result in _scan(self.root / "points" / point.hash, point.hash,
+                                        self.seed):
+            if isinstance(result, str):
+                warnings.warn(f"{path} is redone: {result}", stacklevel=2)
+                path.unlink()
+                continue
+            if span.start > start:
+                gaps.append(range(start, min(span.start, runs)))
+            start = max(start, span.stop)
+        gaps.append(range(start, runs))
+        return [gap for gap in gaps if gap]
+
+    def write(self, point: Point, runs: range, table: pa.Table) -> None:
+        """Store runs ``runs`` of ``point`` atomically."""
+        problem = _problem(table, point.hash, self.seed, runs)
+        if problem is not None:  # a worker with another sarlink version, or a bug
+            raise RuntimeError(f"a task for runs {runs.start}..{runs.stop - 1} of grid point "
+                               f"{point.params} returned a wrong table: {problem}")
+        folder = self.root / "points" / point.hash
+        folder.mkdir(parents=True, exist_ok=True)
+        _write_atomic(folder / _file_name(runs),
+                      lambda fh: pq.write_table(table, fh, compression="zstd",
+                                                write_page_checksum=True))
+
+
+@contextmanager
+def _locked(root: Path) -> Iterator[None]:
+    """Hold the folder's lock, so that two sweeps never write one folder at once.
+
+    The operating system releases it when the process ends, however it ends.
+    """
+    with open(root / ".lock", "w") as fh:
+        if os.name == "posix":
+            import fcntl
+
+            try:
+                fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                raise ConfigError(f"{root} is being written by another sweep") from None
+        yield
+
+
+def _identity(seed: int, points: Sequence[Point]) -> str:
+    """What the rows depend on: the seed and each grid point's mission, in grid order."""
+    data = json.dumps({"seed": seed, "points": [p.hash for p in points]})
+    return hashlib.sha256(data.encode()).hexdigest()[:16]
+
+
+@contextmanager
+def open_store(out_dir: str | Path, experiment: Experiment) -> Iterator[Store]:
+    """Open ``out_dir`` for a sweep of ``experiment``, creating it or resuming it.
+
+    A folder holding a different experiment (another seed or other grid points) is refused;
+    the same experiment with another name, number of runs or chunk size resumes, and its
+    manifest is updated.
+    """
+    root = Path(out_dir)
+    root.mkdir(parents=True, exist_ok=True)
+    points = [Point(params, mission, mission_hash(mission))
+              for params, mission in experiment.points()]
+    manifest = {
+        "format": FORMAT,
+        "identity": _identity(experiment.seed, points),
+        "sarlink": version("sarlink"),
+        "experiment": experiment.model_dump(mode="json"),
+        "points": [{"hash": p.hash, "params": p.params} for p in points],
+    }
+    with _locked(root):
+        if (root / MANIFEST).exists():
+            old = read_manifest(root)
+            if old["identity"] != manifest["identity"]:
+                raise ConfigError(
+                    f"{root} holds the results of another experiment "
+                    f"({old['experiment']['name']!r}: other seed, mission or grid); "
+                    "use another output folder"
+                )
+        for stale in root.glob("points/*/.*.tmp"):  # left by a killed sweep; we hold the lock
+            stale.unlink()
+        text = json.dumps(manifest, indent=2).encode()
+        _write_atomic(root / MANIFEST, lambda fh: fh.write(text))
+        yield Store(root, experiment.seed, points)
+
+
+# -- reading -----------------------------------------------------------------------------------
+
+
+def read_manifest(out_dir: str | Path) -> dict[str, Any]:
+    """The manifest of a results folder (see the module docstring)."""
+    path = Path(out_dir) / MANIFEST
+    if not path.exists():
+        raise FileNotFoundError(f"{out_dir} is not a sarlink results folder (no {MANIFEST})")
+    try:
+        manifest: dict[str, Any] = json.loads(path.read_text())
+    except ValueError as exc:
+        raise ConfigError(f"{path} is damaged: {exc}") from None
+    if manifest.get("format") != FORMAT:
+        raise ConfigError(f"{path} has layout format {manifest.get('format')}, "
+                          f"this sarlink reads format {FORMAT}")
+    return manifest
+
+
+def load(out_dir: str | Path) -> pd.DataFrame:
+    """Every stored run of a results folder, one row per run, in grid order then run order.
+
+    Columns: ``point`` (the grid point's index), ``seed``, ``run``, every flat mission
+    parameter (``bs`` as a tuple or None, ``min_cells`` as a nullable integer), then the
+    outcomes of :meth:`sarlink.RunResult.row`. Runs beyond the manifest's ``runs`` are left
+    out; unusable files are skipped with a warning (a sweep in the folder redoes them).
+    """
+    root = Path(out_dir)
+    manifest = read_manifest(root)
+    seed, runs = manifest["experiment"]["seed"], manifest["experiment"]["runs"]
+    tables = []
+    for index, point in enumerate(manifest["points"]):
+        for path, span, result in _scan(root / "points" / point["hash"], point["hash"], seed):
+            if isinstance(result, str):
+                warnings.warn(f"{path} is not loaded: {result}", stacklevel=2)
+            elif span.start < runs:
+                table = result.slice(0, runs - span.start)
+                tables.append(table.add_column(0, "point", pa.repeat(pa.scalar(index),
+                                                                     table.num_rows)))
+    if not tables:
+        return pd.DataFrame(columns=["point", "seed", "run", *_param_columns()])
+    df = pa.concat_tables(tables, promote_options="default").to_pandas()
+    firsts = np.flatnonzero(np.diff(df["point"].to_numpy(), prepend=-1))
+    for name, col in _param_columns().items():
+        if pa.types.is_list(col.type):  # hashable values, so that one can group by them
+            heads = df[name].iloc[firsts]
+            df[name] = df["point"].map(
+                {p: None if v is None else tuple(v) for p, v in zip(df["point"].iloc[firsts],
+                                                                    heads, strict=True)})
+        elif col.optional and pa.types.is_integer(col.type):
+            df[name] = df[name].astype("Int64")
+    return df
