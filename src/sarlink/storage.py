@@ -131,8 +131,13 @@ def _problem(table: pa.Table, point: str, seed: int, runs: range) -> str | None:
         return "it belongs to another grid point"
     if meta.get(_SEED_KEY) != str(seed).encode():
         return "it was made with another seed"
-    if "run" not in table.column_names or not np.array_equal(
-            table["run"].to_numpy(), np.arange(runs.start, runs.stop)):
+    types = dict(zip(table.column_names, table.schema.types, strict=True))
+    expected = {"seed": pa.int64(), "run": pa.int64(),
+                **{name: col.type for name, col in _param_columns().items()}}
+    wrong = [name for name, kind in expected.items() if types.get(name) != kind]
+    if wrong:  # a damaged footer can rename or retype columns without failing to read
+        return f"its columns {', '.join(wrong)} are missing or of another type"
+    if not np.array_equal(table["run"].to_numpy(), np.arange(runs.start, runs.stop)):
         return f"it does not hold exactly runs {runs.start} to {runs.stop - 1}"
     return None
 

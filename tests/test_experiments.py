@@ -1,0 +1,240 @@
+"""Experiments: validation, grid expansion, and sweeps that give the same rows however they run.
+
+The sweeps here share one small experiment; its uninterrupted single-worker sweep is the
+reference every other way of running it must reproduce row for row.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from sarlink import ConfigError, Experiment, Mission, load, prepare, sweep
+from sarlink.cli import app
+from sarlink.experiments import _environment
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "sweep.toml"
+
+SMALL: dict[str, Any] = {
+    "name": "small", "seed": 11, "runs": 100, "chunk": 5,
+    "mission": {"team": {"drones": 8}, "timing": {"horizon": 2000.0}},
+    "grid": {"planner": ["covb", "conb"], "rc": [500.0, 1000.0]},
+}
+SMALL_TOML = """\
+name = "small"
+seed = 11
+runs = 100
+chunk = 5
+
+[mission.team]
+drones = 8
+
+[mission.timing]
+horizon = 2000.0
+
+[grid]
+planner = ["covb", "conb"]
+rc = [500, 1000]
+"""
+
+
+def small(**changes: Any) -> Experiment:
+    return Experiment.from_dict({**SMALL, **changes})
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, pd.DataFrame]:
+    """The small experiment swept by one worker, uninterrupted."""
+    out = tmp_path_factory.mktemp("reference")
+    return out, sweep(small(), out, workers=1, progress=False)
+
+
+# -- the experiment object ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("changes", "expected"), [
+    ({"grid": {"dronez": [1, 2]}}, ["grid", "'dronez'", "known:", "drones"]),
+    ({"grid": {"drones": []}}, ["grid", "'drones'", "no values"]),
+    ({"grid": {"drones": 4}}, ["grid.drones", "list"]),
+    ({"runs": 0}, ["runs", "greater than or equal to 1"]),
+    ({"runs": -5}, ["runs"]),
+    ({"chunk": 0}, ["chunk"]),
+    ({"seed": -1}, ["seed"]),
+    ({"name": ""}, ["name"]),
+    ({"sed": 1}, ["sed", "Extra inputs"]),
+    ({"mission": {"team": {"drones": 0}}}, ["mission.team.drones"]),
+    ({"grid": {"drones": [4, 0]}}, ["grid point drones=0", "team.drones"]),
+    ({"grid": {"planner": ["covb", "nope"]}}, ["grid point planner='nope'", "team.planner"]),
+    ({"grid": {"rc": [500, 500.0]}}, ["rc=500.0", "same mission"]),
+])
+def test_invalid_experiments_name_the_field(changes: dict[str, Any], expected: list[str]) -> None:
+    with pytest.raises(ConfigError) as err:
+        small(**changes)
+    for part in expected:
+        assert part in str(err.value)
+
+
+def test_experiment_file_reads_like_the_dict(tmp_path: Path) -> None:
+    path = tmp_path / "small.toml"
+    path.write_text(SMALL_TOML)
+    assert Experiment.from_toml(path) == small()
+
+
+def test_broken_experiment_file_names_the_file(tmp_path: Path) -> None:
+    path = tmp_path / "broken.toml"
+    path.write_text("name = \n")
+    with pytest.raises(ConfigError, match=r"broken\.toml"):
+        Experiment.from_toml(path)
+
+
+def test_points_are_the_cartesian_product_last_parameter_fastest() -> None:
+    points = Experiment.from_toml(EXAMPLE).points()
+    assert len(points) == 12
+    assert [p for p, _ in points[:3]] == [
+        {"planner": "covb", "drones": 4, "rc": 500.0},
+        {"planner": "covb", "drones": 4, "rc": 1000.0},
+        {"planner": "covb", "drones": 8, "rc": 500.0},
+    ]
+    params, mission = points[-1]
+    assert params == {"planner": "concov", "drones": 8, "rc": 1000.0}
+    assert mission == Mission.build(planner="concov", drones=8, rc=1000.0, horizon=2000.0)
+
+
+def test_no_grid_is_one_point_the_base_mission() -> None:
+    assert small(grid={}).points() == [({}, small().mission)]
+
+
+def test_environment_is_set_then_restored(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("SARLINK_A", "before")
+    monkeypatch.delenv("SARLINK_B", raising=False)
+    with _environment({"SARLINK_A": "1", "SARLINK_B": "2"}):
+        assert (os.environ["SARLINK_A"], os.environ["SARLINK_B"]) == ("1", "2")
+    assert os.environ["SARLINK_A"] == "before" and "SARLINK_B" not in os.environ
+
+
+# -- sweeps ------------------------------------------------------------------------------------
+
+
+def test_sweep_rows_are_the_engine_runs(reference: tuple[Path, pd.DataFrame]) -> None:
+    _, df = reference
+    assert len(df) == 4 * 100
+    assert list(df[["planner", "rc"]].drop_duplicates().itertuples(index=False, name=None)) == [
+        ("covb", 500.0), ("covb", 1000.0), ("conb", 500.0), ("conb", 1000.0)]
+    assert (df.groupby("point")["run"].apply(list) == [list(range(100))] * 4).all()
+    for point, run in [(0, 0), (1, 37), (3, 99)]:
+        row = df[(df.point == point) & (df.run == run)].iloc[0]
+        expected = prepare(Mission.build(drones=8, horizon=2000.0, planner=row.planner,
+                                         rc=row.rc)).run(11, run).row()
+        for name in ("target_x", "t_detect", "t_notify", "immediate", "detector", "t_reachable"):
+            assert row[name] == pytest.approx(expected[name], nan_ok=True)
+        assert list(row.reach_cum) == expected["reach_cum"]
+
+
+def test_every_point_sees_the_same_targets(reference: tuple[Path, pd.DataFrame]) -> None:
+    """Common random numbers: run k has one target at every grid point."""
+    _, df = reference
+    targets = df.pivot(index="run", columns="point", values="target_x")
+    assert targets.nunique(axis=1).eq(1).all()
+    assert targets[0].nunique() == 100
+
+
+def test_two_workers_and_another_chunk_give_the_same_rows(
+        reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
+    df = sweep(small(chunk=8), tmp_path, workers=2, progress=False)
+    pd.testing.assert_frame_equal(df, reference[1])
+    assert len(list(tmp_path.glob("points/*/*.parquet"))) == 4 * 13  # 100 runs in chunks of 8
+
+
+def test_dask_local_cluster_gives_the_same_rows(
+        reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
+    df = sweep(small(chunk=25), tmp_path, workers=2, dask_local=True, progress=False)
+    pd.testing.assert_frame_equal(df, reference[1])
+
+
+def test_resume_after_sigkill_gives_the_rows_of_an_uninterrupted_sweep(
+        reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
+    experiment, out = tmp_path / "small.toml", tmp_path / "out"
+    experiment.write_text(SMALL_TOML)
+    command = [sys.executable, "-c", "from sarlink.cli import app; app()",
+               "sweep", str(experiment), "--out", str(out), "--workers", "2", "--quiet"]
+    proc = subprocess.Popen(command)
+    try:
+        deadline = time.monotonic() + 60
+        while len(list(out.glob("points/*/*.parquet"))) < 3:
+            assert proc.poll() is None and time.monotonic() < deadline, "no results appeared"
+            time.sleep(0.002)
+    finally:
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+    done = list(out.glob("points/*/*.parquet"))
+    assert 3 <= len(done) < 80, "the sweep must be killed half way"
+    # resume with another chunk size: the stored runs are neither redone nor counted twice
+    before = {path: path.stat().st_mtime_ns for path in done}
+    df = sweep(small(chunk=7), out, workers=2, progress=False)
+    pd.testing.assert_frame_equal(df, reference[1])
+    assert all(path.stat().st_mtime_ns == t for path, t in before.items())
+    assert not list(out.glob("points/*/.*.tmp"))
+
+
+def test_damaged_file_is_redone_by_the_next_sweep(
+        reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    sweep(small(runs=20), out, workers=1, progress=False)
+    victim = sorted(out.glob("points/*/runs-000005-000010.parquet"))[0]
+    victim.write_bytes(victim.read_bytes()[:-40])
+    with pytest.warns(UserWarning, match="not loaded"):
+        assert len(load(out)) == 4 * 20 - 5
+    with pytest.warns(UserWarning, match="redone"):
+        df = sweep(small(runs=20), out, workers=1, progress=False)
+    pd.testing.assert_frame_equal(df, reference[1][reference[1].run < 20].reset_index(drop=True))
+
+
+def test_invalid_sweep_arguments(tmp_path: Path) -> None:
+    for kwargs, message in [({"workers": 0}, "workers"),
+                            ({"scheduler": "tcp://x:1", "dask_local": True}, "exclude"),
+                            ({"scheduler": "tcp://x:1", "workers": 2}, "dask worker")]:
+        with pytest.raises(ConfigError, match=message):
+            sweep(small(), tmp_path, progress=False, **kwargs)
+
+
+# -- the command line --------------------------------------------------------------------------
+
+runner = CliRunner()
+
+
+def test_cli_summarize_formats(reference: tuple[Path, pd.DataFrame]) -> None:
+    out, _ = reference
+    table = runner.invoke(app, ["summarize", str(out), "--td", "1000", "--td", "2000"])
+    assert table.exit_code == 0, table.output
+    assert "planner=conb, rc=1000.0 (100 runs)" in table.stdout
+    assert "t_d = 1000 s" in table.stdout and "mission success P_s" in table.stdout
+    records = json.loads(runner.invoke(app, ["summarize", str(out), "--json"]).stdout)
+    assert len(records) == 4 and records[0]["td"] == 2000.0 and records[0]["runs"] == 100
+    csv = runner.invoke(app, ["summarize", str(out), "--td", "500", "--csv"]).stdout
+    assert csv.splitlines()[0].startswith("planner,rc,td,runs,") and len(csv.splitlines()) == 5
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["summarize", "{out}", "--csv", "--json"], "one of --csv and --json"),
+    (["summarize", "{out}", "--td", "5000"], "beyond the horizon"),
+    (["summarize", "{missing}"], "not a sarlink results folder"),
+    (["sweep", "{bad}", "--out", "{missing}"], "runs"),
+])
+def test_cli_errors_are_one_line(reference: tuple[Path, pd.DataFrame], tmp_path: Path,
+                                 args: list[str], message: str) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text(SMALL_TOML.replace("runs = 100", "runs = 0"))
+    paths = {"out": reference[0], "missing": tmp_path / "missing", "bad": bad}
+    result = runner.invoke(app, [a.format(**paths) for a in args])
+    assert result.exit_code == 2
+    assert message in " ".join(result.output.split()) and "Traceback" not in result.output
