@@ -33,6 +33,8 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 from numba import njit
 
+from sarlink.config import ConfigError
+
 if TYPE_CHECKING:
     from sarlink.config import Mission
 
@@ -527,10 +529,9 @@ def clear_cache(*, disk: bool = True) -> int:
     return removed
 
 
-def _plan_params(mission: Mission, salesmen: int) -> dict[str, Any]:
+def _plan_params(mission: Mission, salesmen: int, cells: int) -> dict[str, Any]:
     """Everything a mission's plan depends on; ``min_cells`` resolved so None shares a key."""
     m = mission.mtsp
-    cells = len(grid_cells(mission.area.size, mission.sensing.r))
     return {
         "version": CACHE_VERSION,
         "size": mission.area.size,
@@ -539,7 +540,7 @@ def _plan_params(mission: Mission, salesmen: int) -> dict[str, Any]:
         "salesmen": salesmen,
         "solver": m.solver,
         "objective": m.objective,
-        "min_cells": m.min_cells if m.min_cells is not None else cells // max(salesmen, 1),
+        "min_cells": m.min_cells if m.min_cells is not None else cells // salesmen,
         "population": m.population,
         "iterations": m.iterations,
         "plan_seed": m.plan_seed,
@@ -554,13 +555,21 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
     ``mission.sensing.r``; the depot is the BS; solver settings come from ``mission.mtsp``.
     Plans are memoised in the process and stored as JSON in :func:`cache_dir`, under a hash
     of everything they depend on (:data:`CACHE_VERSION` included). Files are written
-    atomically; an unreadable file counts as missing and is rewritten.
+    atomically; an unreadable file counts as missing and is rewritten. A :class:`ConfigError`
+    names the setting when the mission admits no plan for ``salesmen`` drones.
     """
-    params = _plan_params(mission, salesmen)
+    points = grid_cells(mission.area.size, mission.sensing.r)
+    cells, min_cells = len(points), mission.mtsp.min_cells
+    if not 1 <= salesmen <= cells:
+        raise ConfigError(f"an mTSP plan needs 1 to {cells} drones, one per cell at most "
+                          f"({cells} cells of side r in the area), got {salesmen}")
+    if min_cells is not None and min_cells * salesmen > cells:
+        raise ConfigError(f"mtsp.min_cells must be at most {cells // salesmen} = floor({cells} "
+                          f"cells / {salesmen} drones), got {min_cells}")
+    params = _plan_params(mission, salesmen, cells)
     key = hashlib.sha256(json.dumps(params, sort_keys=True).encode()).hexdigest()[:32]
     if key in _MEMO:
         return _MEMO[key]
-    points = grid_cells(mission.area.size, mission.sensing.r)
     path = cache_dir() / f"{key}.json"
     plan = _read_plan(path, params, points)
     if plan is None:

@@ -6,10 +6,12 @@ from sarlink.planners.base import Planner, Steering
 from sarlink.planners.conb import ConB
 from sarlink.planners.concov import ConCov
 from sarlink.planners.covb import CovB
+from sarlink.planners.mtsp import Mtsp
+from sarlink.planners.mtsp_conb import MtspConB
 
 __all__ = ["PLANNERS", "Planner", "Steering", "get_planner", "planner_names"]
 
-PLANNERS: dict[str, Planner] = {p.name: p for p in (CovB(), ConB(), ConCov())}
+PLANNERS: dict[str, Planner] = {p.name: p for p in (CovB(), ConB(), ConCov(), Mtsp(), MtspConB())}
 
 
 def planner_names() -> list[str]:
