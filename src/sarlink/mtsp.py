@@ -104,7 +104,8 @@ def grid_cells(size: float, r: float) -> np.ndarray:
 class MtspPlan:
     """An mTSP plan: which points each salesman (drone) visits, in order, from and to the depot.
 
-    The plan checks itself on construction: the tours must visit every point exactly once.
+    The plan checks itself on construction: the tours must visit every point exactly once, each
+    at least ``min_cells`` of them.
     Arrays are read-only, so a plan can be shared (it is memoised by :func:`plan_for`).
     """
 
@@ -114,6 +115,8 @@ class MtspPlan:
     """Where every tour starts and ends (the BS)."""
     tours: tuple[tuple[int, ...], ...]
     """Per salesman, the indices into ``points`` in visiting order; the depot is not listed."""
+    min_cells: int = 1
+    """The least number of points any tour was allowed."""
     solver: Solver = "ga"
     objective: Objective = "minsum"
     history: np.ndarray = field(default_factory=lambda: np.empty(0))
@@ -131,6 +134,8 @@ class MtspPlan:
         visited = sorted(i for tour in tours for i in tour)
         if visited != list(range(len(points))):
             raise ValueError("tours must visit every point index exactly once")
+        if min(map(len, tours), default=0) < self.min_cells:
+            raise ValueError(f"every tour must visit at least min_cells = {self.min_cells} points")
         lengths = np.array([_tour_length(points, depot, tour) for tour in tours])
         history = np.array(self.history, dtype=float)
         for arr in (points, lengths, history):
@@ -234,8 +239,8 @@ def solve(
     else:
         tours = _solve_ortools(pts, dep, salesmen, objective, min_cells, time_limit)
         history = np.empty(0)
-    return MtspPlan(points=pts, depot=dep, tours=tours, solver=solver, objective=objective,
-                    history=history, seconds=time.perf_counter() - start)
+    return MtspPlan(points=pts, depot=dep, tours=tours, min_cells=min_cells, solver=solver,
+                    objective=objective, history=history, seconds=time.perf_counter() - start)
 
 
 def _check_int(name: str, value: Any, lo: int, hi: int | None, hi_text: str = "") -> None:
@@ -589,7 +594,8 @@ def _read_plan(path: Path, params: dict[str, Any], points: np.ndarray) -> MtspPl
         if data["params"] != params:
             return None
         return MtspPlan(points=points, depot=tuple(params["bs"]), tours=data["tours"],
-                        solver=params["solver"], objective=params["objective"],
+                        min_cells=params["min_cells"], solver=params["solver"],
+                        objective=params["objective"],
                         history=data["history"], seconds=data["seconds"])
     except (OSError, ValueError, KeyError, TypeError):
         return None
