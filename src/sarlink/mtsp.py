@@ -120,8 +120,8 @@ class MtspPlan:
     solver: Solver = "ga"
     objective: Objective = "minsum"
     history: np.ndarray = field(default_factory=lambda: np.empty(0))
-    """GA: the best cost after evaluating each iteration's population (never rises); empty for
-    OR-Tools."""
+    """GA: the best cost in each iteration's population (Kirk's ``dist_history``; the best of
+    each group survives, so it never rises); empty for OR-Tools."""
     seconds: float = 0.0
     """Wall time of the solve that produced the plan (kept when the plan is read from cache)."""
     lengths: np.ndarray = field(init=False)
@@ -348,7 +348,7 @@ def _ga_kernel(
 
     An individual is a permutation ``route`` of 1..n and sorted ``breaks``: salesman ``s``
     visits ``route[breaks[s-1]:breaks[s]]`` (with 0 and n at the ends). Returns the best route,
-    its breaks and the best cost after each iteration's evaluation.
+    its breaks and the best cost in each iteration's population.
     """
     n = dmat.shape[0] - 1
     n_breaks = salesmen - 1
@@ -374,11 +374,11 @@ def _ga_kernel(
         for p in range(pop_size):
             costs[p] = _cost(dmat, pop_rte[p], pop_brk[p], minmax)
         p_min = np.argmin(costs)
+        history[it] = costs[p_min]  # Kirk's dist_history: elitism keeps it from rising
         if costs[p_min] < best_cost:
             best_cost = costs[p_min]
             best_rte[:] = pop_rte[p_min]
             best_brk[:] = pop_brk[p_min]
-        history[it] = best_cost
 
         rng.shuffle(order)
         for g in range(0, pop_size, 8):
@@ -581,7 +581,8 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
         m = mission.mtsp
         plan = solve(points, mission.area.bs_xy, salesmen, solver=m.solver,
                      objective=m.objective, min_cells=params["min_cells"],
-                     population=m.population, iterations=m.iterations, seed=m.plan_seed)
+                     population=m.population, iterations=m.iterations, seed=m.plan_seed,
+                     time_limit=ORTOOLS_TIME_LIMIT)
         _write_plan(path, params, plan)
     _MEMO[key] = plan
     return plan
