@@ -17,6 +17,7 @@ from typing import Any
 
 import pandas as pd
 import pytest
+from distributed import LocalCluster
 from typer.testing import CliRunner
 
 from sarlink import ConfigError, Experiment, Mission, load, prepare, sweep
@@ -155,9 +156,12 @@ def test_two_workers_and_another_chunk_give_the_same_rows(
     assert len(list(tmp_path.glob("points/*/*.parquet"))) == 4 * 13  # 100 runs in chunks of 8
 
 
-def test_dask_local_cluster_gives_the_same_rows(
-        reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
-    df = sweep(small(chunk=25), tmp_path, workers=2, dask_local=True, progress=False)
+def test_dask_gives_the_same_rows(reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
+    """Half on a LocalCluster of the sweep's own, the rest on a running cluster's scheduler."""
+    sweep(small(runs=50, chunk=25), tmp_path, workers=2, dask_local=True, progress=False)
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+        df = sweep(small(chunk=25), tmp_path, scheduler=cluster.scheduler_address,
+                   progress=False)
     pd.testing.assert_frame_equal(df, reference[1])
 
 

@@ -239,7 +239,7 @@ class Store:
         folder = self.root / "points" / point.hash
         folder.mkdir(parents=True, exist_ok=True)
         _write_atomic(folder / _file_name(runs),
-                      lambda fh: pq.write_table(table, fh, compression="zstd",
+                      lambda fh: pq.write_table(table, fh, compression="snappy",
                                                 write_page_checksum=True))
 
 
