@@ -24,6 +24,8 @@ test: lint
 
 bench: $(BIN)/sarlink
 	$(BIN)/python benchmarks/bench_engine.py --out benchmarks/results/engine.md
+	$(BIN)/python benchmarks/bench_mtsp.py --out benchmarks/results/mtsp.md
+	$(BIN)/python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -7,8 +7,6 @@ import os
 import pytest
 from hypothesis import HealthCheck, settings
 
-from sarlink import Mission
-
 settings.register_profile(
     "sarlink", max_examples=25, deadline=None,
     suppress_health_check=[HealthCheck.too_slow],
@@ -20,7 +18,7 @@ settings.register_profile(
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "sarlink"))
 
 
-@pytest.fixture(scope="session")
-def short_mission() -> Mission:
-    """The paper's setting, 8 drones, cut to 600 s so that a run takes a millisecond."""
-    return Mission.build(drones=8, horizon=600.0)
+@pytest.fixture(autouse=True, scope="session")
+def _private_plan_cache(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """Keep the tests' mTSP plans out of the user's cache (shared by the whole session)."""
+    os.environ["SARLINK_CACHE_DIR"] = str(tmp_path_factory.mktemp("cache"))

@@ -47,6 +47,7 @@ __all__ = [
     "grid_cells",
     "plan_for",
     "solve",
+    "solve_for",
 ]
 
 Solver = Literal["ga", "ortools"]
@@ -553,16 +554,42 @@ def _plan_params(mission: Mission, salesmen: int, cells: int) -> dict[str, Any]:
     }
 
 
-def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
-    """The mTSP plan for ``salesmen`` drones in ``mission``, computed once and cached.
+def solve_for(mission: Mission, salesmen: int) -> MtspPlan:
+    """Solve the mTSP plan for ``salesmen`` drones in ``mission`` now, bypassing every cache.
 
     The cities are the cells of :func:`grid_cells` for ``mission.area.size`` and
     ``mission.sensing.r``; the depot is the BS; solver settings come from ``mission.mtsp``.
+    A :class:`ConfigError` names the setting when the mission admits no plan.
+    """
+    points, params = _checked_params(mission, salesmen)
+    m = mission.mtsp
+    return solve(points, mission.area.bs_xy, salesmen, solver=m.solver, objective=m.objective,
+                 min_cells=params["min_cells"], population=m.population,
+                 iterations=m.iterations, seed=m.plan_seed, time_limit=ORTOOLS_TIME_LIMIT)
+
+
+def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
+    """The plan of :func:`solve_for`, computed once and cached.
+
     Plans are memoised in the process and stored as JSON in :func:`cache_dir`, under a hash
     of everything they depend on (:data:`CACHE_VERSION` included). Files are written
-    atomically; an unreadable file counts as missing and is rewritten. A :class:`ConfigError`
-    names the setting when the mission admits no plan for ``salesmen`` drones.
+    atomically; an unreadable file counts as missing and is rewritten.
     """
+    points, params = _checked_params(mission, salesmen)
+    key = hashlib.sha256(json.dumps(params, sort_keys=True).encode()).hexdigest()[:32]
+    if key in _MEMO:
+        return _MEMO[key]
+    path = cache_dir() / f"{key}.json"
+    plan = _read_plan(path, params, points)
+    if plan is None:
+        plan = solve_for(mission, salesmen)
+        _write_plan(path, params, plan)
+    _MEMO[key] = plan
+    return plan
+
+
+def _checked_params(mission: Mission, salesmen: int) -> tuple[np.ndarray, dict[str, Any]]:
+    """The cells and the plan parameters, or a :class:`ConfigError` if no plan exists."""
     points = grid_cells(mission.area.size, mission.sensing.r)
     cells, min_cells = len(points), mission.mtsp.min_cells
     if not 1 <= salesmen <= cells:
@@ -571,21 +598,7 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
     if min_cells is not None and min_cells * salesmen > cells:
         raise ConfigError(f"mtsp.min_cells must be at most {cells // salesmen} = floor({cells} "
                           f"cells / {salesmen} drones), got {min_cells}")
-    params = _plan_params(mission, salesmen, cells)
-    key = hashlib.sha256(json.dumps(params, sort_keys=True).encode()).hexdigest()[:32]
-    if key in _MEMO:
-        return _MEMO[key]
-    path = cache_dir() / f"{key}.json"
-    plan = _read_plan(path, params, points)
-    if plan is None:
-        m = mission.mtsp
-        plan = solve(points, mission.area.bs_xy, salesmen, solver=m.solver,
-                     objective=m.objective, min_cells=params["min_cells"],
-                     population=m.population, iterations=m.iterations, seed=m.plan_seed,
-                     time_limit=ORTOOLS_TIME_LIMIT)
-        _write_plan(path, params, plan)
-    _MEMO[key] = plan
-    return plan
+    return points, _plan_params(mission, salesmen, cells)
 
 
 def _read_plan(path: Path, params: dict[str, Any], points: np.ndarray) -> MtspPlan | None:

@@ -2,6 +2,7 @@
 
 import typer
 
+from sarlink.cli.plan import plan
 from sarlink.cli.simulate import simulate
 from sarlink.cli.summarize import summarize
 from sarlink.cli.sweep import sweep
@@ -14,6 +15,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 app.command()(simulate)
+app.command()(plan)
 app.command()(sweep)
 app.command()(summarize)
 

@@ -1,0 +1,29 @@
+"""Plan computation time (Fig. 1) measures what it says it measures."""
+
+from __future__ import annotations
+
+import pytest
+
+import sarlink.plantime as plantime
+from sarlink import Mission
+from sarlink.mtsp import MtspPlan
+
+
+@pytest.mark.parametrize(("planner", "solves"), [("mtsp", [8]), ("covb", []), ("conb", []),
+                                                   ("mtsp-conb", [4])])
+def test_plan_time_solves_mtsp_afresh_and_only_for_the_planned_drones(
+    planner: str, solves: list[int], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    calls: list[int] = []
+    real = plantime.solve_for
+
+    def counting(mission: Mission, salesmen: int) -> MtspPlan:
+        calls.append(salesmen)
+        return real(mission, salesmen)
+
+    monkeypatch.setattr(plantime, "solve_for", counting)
+    mission = Mission.build(planner=planner, drones=8, nr=4, rc=500.0, horizon=1000.0,
+                            iterations=200)
+    seconds = plantime.plan_seconds(mission)
+    assert seconds > 0
+    assert calls == solves
