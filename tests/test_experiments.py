@@ -153,6 +153,7 @@ def test_two_workers_and_another_chunk_give_the_same_rows(
         reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
     df = sweep(small(chunk=8), tmp_path, workers=2, progress=False)
     pd.testing.assert_frame_equal(df, reference[1])
+    pd.testing.assert_frame_equal(load(tmp_path), df)
     assert len(list(tmp_path.glob("points/*/*.parquet"))) == 4 * 13  # 100 runs in chunks of 8
 
 

@@ -268,7 +268,8 @@ def _progress_bar(enabled: bool) -> Progress:
 def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = None,
           scheduler: str | None = None, dask_local: bool = False,
           progress: bool = True) -> pd.DataFrame:
-    """Run ``experiment`` into ``out_dir`` and return all its runs (:func:`sarlink.load`).
+    """Run ``experiment`` into ``out_dir`` and return all its runs, as :func:`sarlink.load`
+    would read them back.
 
     Runs already stored in ``out_dir`` are kept and not run again, so an interrupted sweep
     resumes where it stopped; the rows are the same whatever the workers or chunk size.
@@ -306,4 +307,4 @@ def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = 
                 for task, table in results:
                     store.write(task.point, task.runs, table)
                     bar.advance(job, len(task.runs))
-    return storage.load(out_dir)
+        return store.frame(experiment.runs)
