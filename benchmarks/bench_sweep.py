@@ -3,20 +3,21 @@
 A sweep of 20,000 runs (the paper's setting: 10 drones, 4000 s; CovB and ConB x r_c 500 and
 1000 m, 5000 runs each) is timed three ways:
 
-- kernel: ``prepare`` once per grid point and ``Prepared.run`` per run, in this process, CPU
-  time: the work no sweep can avoid;
+- kernel: ``prepare`` once per grid point and ``Prepared.run`` per run, in this process: the
+  work no sweep can avoid;
 - ``sweep`` with 1 worker and with 2 workers, from the call to the returned DataFrame: worker
-  start-up, task transfer, result rows, Parquet files, progress, and loading the results.
+  start-up, task transfer, result rows, Parquet files, and the DataFrame.
 
 Overhead with ``w`` workers = (wall time x w) / kernel time - 1: the share of the workers'
-core time not spent in the kernel. Other programs running on the machine inflate it, so the
-CPU time of the sweeping process and of its (finished) workers is reported too, and the
-overhead by CPU time = that CPU time / kernel time - 1. Run with
+core time not spent in the kernel. The CPU time of the sweeping process and its (finished)
+workers gives a second figure, CPU time / kernel time - 1. Run with
 
     python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
-Targets (issue 4): overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. The load
-average is reported before and after: numbers taken on a busy machine are not comparable.
+Targets (issue 4): overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. Other programs
+on the machine slow every phase down unevenly, so the report gives, per phase, the CPU time
+the rest of the machine used meanwhile (from /proc/stat, Linux) and the time stolen by the
+hypervisor: numbers from phases with much of either are not comparable.
 """
 
 from __future__ import annotations
@@ -27,34 +28,59 @@ import platform
 import resource
 import tempfile
 import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 from sarlink import Experiment, prepare, sweep
 
 
-def kernel_seconds(experiment: Experiment) -> float:
-    """CPU time of the simulations alone, in this process."""
-    start = time.process_time()
+def _machine() -> tuple[float, float]:
+    """Busy and stolen CPU seconds of the whole machine so far (0, 0 without /proc/stat)."""
+    stat = Path("/proc/stat")
+    if not stat.exists():
+        return 0.0, 0.0
+    user, nice, system, _, _, irq, softirq, steal = map(
+        int, stat.read_text().split("\n", 1)[0].split()[1:9])
+    tick = os.sysconf("SC_CLK_TCK")
+    return (user + nice + system + irq + softirq) / tick, steal / tick
+
+
+def _own_cpu() -> float:
+    """CPU seconds of this process and of its children that have ended."""
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + children.ru_utime + children.ru_stime
+
+
+@dataclass(frozen=True)
+class Phase:
+    wall: float
+    cpu: float
+    """this process and its workers"""
+    others: float
+    """CPU used meanwhile by the rest of the machine"""
+    stolen: float
+
+
+def measure(work: Callable[[], object]) -> Phase:
+    wall, cpu, (busy, steal) = time.perf_counter(), _own_cpu(), _machine()
+    work()
+    wall, cpu = time.perf_counter() - wall, _own_cpu() - cpu
+    busy_after, steal_after = _machine()
+    return Phase(wall, cpu, max(busy_after - busy - cpu, 0.0), steal_after - steal)
+
+
+def run_kernel(experiment: Experiment) -> None:
     for _, mission in experiment.points():
         prepared = prepare(mission)
         for run in range(experiment.runs):
             prepared.run(experiment.seed, run)
-    return time.process_time() - start
 
 
-def children_cpu() -> float:
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
-
-
-def timed_sweep(experiment: Experiment, out: Path, workers: int) -> tuple[float, float]:
-    """Wall time and CPU time (this process and its finished workers) of one sweep."""
-    wall, cpu, workers_cpu = time.perf_counter(), time.process_time(), children_cpu()
+def run_sweep(experiment: Experiment, out: Path, workers: int) -> None:
     df = sweep(experiment, out, workers=workers, progress=False)
-    wall = time.perf_counter() - wall
-    cpu = time.process_time() - cpu + children_cpu() - workers_cpu
     assert len(df) == experiment.runs * len(experiment.points())
-    return wall, cpu
 
 
 def main() -> None:
@@ -69,59 +95,51 @@ def main() -> None:
         "grid": {"planner": ["covb", "conb"], "rc": [500.0, 1000.0]},
     })
     total = args.runs * len(experiment.points())
-    load_before = os.getloadavg()
     for _, mission in experiment.points():  # compile or load the Numba cache outside the timing
         prepare(mission).run(0, 0)
-    kernel = kernel_seconds(experiment)
-    print(f"kernel: {kernel:.1f} s CPU for {total} runs ({kernel / total * 1e3:.2f} ms/run)",
-          flush=True)
+    phases = {"kernel, in this process": measure(lambda: run_kernel(experiment))}
+    kernel = phases["kernel, in this process"].cpu
+    print(f"kernel: {kernel:.1f} s CPU for {total} runs", flush=True)
     with tempfile.TemporaryDirectory() as tmp:
-        start_up, _ = timed_sweep(experiment.model_copy(update={"runs": 1}), Path(tmp), 2)
-    times, resume, size = {}, 0.0, 0
+        phases["start-up: a sweep of 1 run per point, 2 workers"] = measure(
+            lambda: run_sweep(experiment.model_copy(update={"runs": 1}), Path(tmp), 2))
+    size = 0
     for workers in (1, 2):
         with tempfile.TemporaryDirectory() as tmp:
-            times[workers] = timed_sweep(experiment, Path(tmp), workers)
+            again = partial(run_sweep, experiment, Path(tmp), workers)
+            phases[f"sweep, {workers} worker{'s' * (workers > 1)}"] = measure(again)
             if workers == 2:
-                resume, _ = timed_sweep(experiment, Path(tmp), workers)  # all stored
+                phases["resume of the finished sweep: check every file"] = measure(again)
                 size = sum(p.stat().st_size for p in Path(tmp).rglob("*.parquet"))
-        wall, cpu = times[workers]
-        print(f"sweep, {workers} worker(s): {wall:.1f} s wall, {cpu:.1f} s CPU; overhead "
-              f"{wall * workers / kernel - 1:+.1%} by wall time, {cpu / kernel - 1:+.1%} by "
-              "CPU time", flush=True)
-    load_after = os.getloadavg()
-    speedup = times[1][0] / times[2][0]
-    print(f"speed-up 2 vs 1 worker: {speedup:.2f}x; start-up {start_up:.1f} s; "
-          f"resume of a finished sweep {resume:.1f} s", flush=True)
+        print(phases[f"sweep, {workers} worker{'s' * (workers > 1)}"], flush=True)
+    one, two = phases["sweep, 1 worker"], phases["sweep, 2 workers"]
+    speedup = one.wall / two.wall
 
     lines = [
         f"Sweep benchmark: `python benchmarks/bench_sweep.py --runs {args.runs}` on "
         f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}.",
         "",
-        f"{total:,} runs: CovB and ConB x r_c 500 and 1000 m, 10 drones, 4000 s, "
-        f"chunks of {experiment.chunk} runs.",
+        f"{total:,} runs: CovB and ConB x r_c 500 and 1000 m, 10 drones, 4000 s, chunks of "
+        f"{experiment.chunk} runs; kernel {kernel / total * 1e3:.2f} ms CPU per run.",
         "",
-        "| measure | 1 worker | 2 workers |",
-        "|---|---|---|",
-        f"| kernel CPU time (prepare + run, one process) | {kernel:.1f} s "
-        f"({kernel / total * 1e3:.2f} ms/run) | |",
-        "| sweep wall time | " + " | ".join(
-            f"{w:.1f} s ({total / w:,.0f} runs/s)" for w, _ in times.values()) + " |",
-        "| sweep CPU time, all processes | " + " | ".join(
-            f"{c:.1f} s" for _, c in times.values()) + " |",
-        "| overhead by wall time (wall x workers / kernel - 1) | " + " | ".join(
-            f"{w * n / kernel - 1:+.1%}" for n, (w, _) in times.items()) + " |",
-        "| overhead by CPU time (CPU / kernel - 1) | " + " | ".join(
-            f"{c / kernel - 1:+.1%}" for _, c in times.values()) + " |",
-        f"| speed-up, 2 workers over 1 | | {speedup:.2f}x |",
+        "| phase | wall (s) | CPU, ours (s) | CPU, rest of the machine (s) | stolen (s) |",
+        "|---|---|---|---|---|",
+        *(f"| {name} | {p.wall:.1f} | {p.cpu:.1f} | {p.others:.1f} | {p.stolen:.1f} |"
+          for name, p in phases.items()),
         "",
-        f"- Fixed start-up cost (a sweep of one run per point, 2 workers): {start_up:.1f} s.",
-        f"- Resume of the finished sweep (check every file, then load): {resume:.1f} s.",
-        f"- Parquet on disk: {size / 2**20:.1f} MiB ({size / total:,.0f} bytes per run).",
-        "- Load average (1, 5, 15 min) before / after: "
-        f"{' '.join(f'{v:.2f}' for v in load_before)} / "
-        f"{' '.join(f'{v:.2f}' for v in load_after)}.",
+        "| result | 1 worker | 2 workers | target |",
+        "|---|---|---|---|",
+        f"| overhead by wall time (wall x workers / kernel - 1) | {one.wall / kernel - 1:+.1%} "
+        f"| {2 * two.wall / kernel - 1:+.1%} | < 5% |",
+        f"| overhead by CPU time (CPU / kernel - 1) | {one.cpu / kernel - 1:+.1%} "
+        f"| {two.cpu / kernel - 1:+.1%} | < 5% |",
+        f"| runs per second | {total / one.wall:,.0f} | {total / two.wall:,.0f} | |",
+        f"| speed-up, 2 workers over 1 | | {speedup:.2f}x | >= 1.8x |",
+        "",
+        f"Parquet on disk: {size / 2**20:.1f} MiB ({size / total:,.0f} bytes per run).",
         "",
     ]
+    print("\n".join(lines))
     if args.out is not None:
         args.out.parent.mkdir(parents=True, exist_ok=True)
         args.out.write_text("\n".join(lines))
