@@ -3,6 +3,7 @@
 import typer
 
 from sarlink.cli.plan import plan
+from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
 from sarlink.cli.summarize import summarize
 from sarlink.cli.sweep import sweep
@@ -18,6 +19,7 @@ app.command()(simulate)
 app.command()(plan)
 app.command()(sweep)
 app.command()(summarize)
+app.command()(reproduce)
 
 
 @app.callback()

@@ -1,0 +1,147 @@
+"""The experiments behind the paper's figures (MODEL.md, "The paper's setting (Table 3)").
+
+Figures 2–6 read one main sweep (planner × team size × communication range, simulated to
+``t_d = 4000 s``): every ``t_d`` they show comes from the same runs' event times, so one sweep
+serves them all and their numbers agree with each other. Fig. 7a (imperfect sensing) and
+Fig. 7b (shadowing) change the mission itself and need sweeps of their own; Fig. 1 times the
+planners rather than simulating missions. Every experiment uses the one seed :data:`SEED`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from sarlink.config import Mission
+from sarlink.experiments import Experiment
+from sarlink.metrics import success_curve, summarize
+
+__all__ = [
+    "CURVE_TDS",
+    "DRONES",
+    "EXPERIMENTS",
+    "FIG2_DRONES",
+    "FIG5_RANGES",
+    "PLANNERS",
+    "PLAN_TIME_PLANNERS",
+    "P_MISS",
+    "QUICK_RUNS",
+    "RANGES",
+    "RUNS",
+    "SEED",
+    "SIGMA",
+    "TD_FIG3",
+    "TD_LONG",
+    "TD_SHORT",
+    "PaperExperiment",
+    "plan_time_missions",
+]
+
+SEED = 2024
+"""The one seed of every run of every experiment."""
+RUNS = 2000
+"""Monte Carlo runs per grid point, as in the paper."""
+QUICK_RUNS = 100
+"""Runs per grid point of ``--quick``: the trends, with intervals about 4.5 times wider."""
+
+PLANNERS = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
+"""Every planner, in the order of the paper's legends."""
+DRONES = tuple(range(2, 23, 2))
+"""Team sizes N_m."""
+RANGES = (500.0, 1000.0, 2000.0)
+"""Communication ranges r_c, m."""
+FIG2_DRONES = (10, 22)
+"""The team sizes of Fig. 2's rows."""
+FIG5_RANGES = (500.0, 1000.0)
+"""The ranges of Fig. 5's panels: the paper leaves out 2000 m, where every planner is near 1."""
+
+TD_SHORT = 1000.0
+"""A short target duration, s: where the paper says a large r_c still gives P_s near 1."""
+TD_FIG3 = 2000.0
+"""The fixed t_d of Fig. 3, s (MODEL.md's choice)."""
+TD_LONG = 4000.0
+"""t_d of Figs. 4–6 and 7b, s: the flight budget, which gives the drones a chance to spread."""
+CURVE_TDS = np.arange(100.0, TD_LONG + 1, 100.0)
+"""The t_d at which Fig. 2 reads P_s from the empirical CDF of notification times, s."""
+
+P_MISS = tuple(round(0.1 * k, 1) for k in range(10))
+"""Miss probabilities of Fig. 7a."""
+SIGMA = 3.0
+"""Shadowing standard deviation of Fig. 7b, dB (the paper's, after Yang et al.)."""
+PLAN_TIME_PLANNERS = ("mtsp", "covb", "conb")
+"""The native planners whose plan computation time Fig. 1 compares."""
+
+_BY = ["planner", "drones", "rc"]
+
+
+@dataclass(frozen=True)
+class PaperExperiment:
+    """A sweep behind some figures, and how its runs become the figures' summary tables."""
+
+    name: str
+    """Folder name under ``out/runs/``."""
+    figures: tuple[int, ...]
+    build: Callable[[int], Experiment]
+    """The experiment with the given runs per grid point."""
+    tables: Callable[[pd.DataFrame], dict[str, pd.DataFrame]]
+    """Summary tables, by name, from the experiment's runs."""
+
+
+def _main(runs: int) -> Experiment:
+    return Experiment(
+        name="Figs. 2-6", seed=SEED, runs=runs,
+        mission=Mission.build(horizon=TD_LONG),
+        grid={"planner": list(PLANNERS), "drones": list(DRONES), "rc": list(RANGES)},
+    )
+
+
+def _main_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"main": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=_BY),
+            "curve": success_curve(runs, CURVE_TDS, by=_BY)}
+
+
+def _miss(runs: int) -> Experiment:
+    return Experiment(
+        name="Fig. 7a", seed=SEED, runs=runs,
+        mission=Mission.build(drones=10, rc=500.0, horizon=TD_SHORT),
+        grid={"planner": list(PLANNERS), "p_miss": list(P_MISS)},
+    )
+
+
+def _miss_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"miss": summarize(runs, td=TD_SHORT, by=["planner", "drones", "rc", "p_miss"])}
+
+
+def _shadowing(runs: int) -> Experiment:
+    return Experiment(
+        name="Fig. 7b", seed=SEED, runs=runs,
+        mission=Mission.build(rc=1000.0, sigma=SIGMA, horizon=TD_LONG),
+        grid={"planner": list(PLANNERS), "drones": list(DRONES)},
+    )
+
+
+def _shadowing_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"shadowing": summarize(runs, td=TD_LONG, by=[*_BY, "sigma"])}
+
+
+EXPERIMENTS = {e.name: e for e in (
+    PaperExperiment("main", (2, 3, 4, 5, 6), _main, _main_tables),
+    PaperExperiment("miss", (7,), _miss, _miss_tables),
+    PaperExperiment("shadowing", (7,), _shadowing, _shadowing_tables),
+)}
+"""The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
+:data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`) and ``curve`` (``success_curve`` at
+:data:`CURVE_TDS`)."""
+
+
+def plan_time_missions(iterations: int | None = None) -> list[Mission]:
+    """The missions whose plans Fig. 1 times: the native planners at r_c = 500 m, every N_m.
+
+    ``iterations`` overrides the GA's (the paper's 5000) for quick tests only.
+    """
+    extra = {} if iterations is None else {"iterations": iterations}
+    return [Mission.build(planner=p, drones=n, rc=500.0, **extra)
+            for p in PLAN_TIME_PLANNERS for n in DRONES]

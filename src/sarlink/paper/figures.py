@@ -1,0 +1,372 @@
+"""The paper's figures, drawn from summary tables, and the values each one plots.
+
+Every function takes the summary tables of :mod:`sarlink.paper.experiments` (and optionally an
+empty figure to draw into) and returns the figure, laid out like the paper's: one panel per
+communication range where the paper splits them, Fig. 2 with a row per team size. Every
+probability is drawn with its 95% Wilson interval as a band, every mean with a band of ± one
+standard error; each planner keeps one colour and marker throughout, and legends name the
+planners as the paper does. :data:`FIGURES` lists them with their captions, the tables they
+need and the table of values they plot, which the report prints beside each figure.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal, NamedTuple
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.ticker import PercentFormatter
+
+from sarlink.paper.experiments import (
+    DRONES,
+    FIG2_DRONES,
+    FIG5_RANGES,
+    PLAN_TIME_PLANNERS,
+    PLANNERS,
+    RANGES,
+    SIGMA,
+    TD_FIG3,
+    TD_LONG,
+    TD_SHORT,
+)
+from sarlink.planners import get_planner
+
+__all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
+           "save"]
+
+STYLE = {
+    "mtsp": ("#1f77b4", "o"),
+    "covb": ("#ff7f0e", "s"),
+    "conb": ("#2ca02c", "^"),
+    "mtsp-conb": ("#d62728", "D"),
+    "concov": ("#9467bd", "v"),
+}
+"""Colour and marker of each planner, the same in every figure."""
+
+_BAND = 0.15
+"""Opacity of the interval bands: light enough for five to overlap legibly."""
+
+
+class Metric(NamedTuple):
+    """A measure of the summary tables and how it is labelled and bounded."""
+
+    column: str
+    label: str
+    probability: bool
+    """A probability has ``_lo``/``_hi`` Wilson bounds; a mean has ``_se``."""
+    unit: str = ""
+    share_of_td: bool = False
+    """A fraction of t_d, drawn as a percentage."""
+
+    def bounds(self, rows: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Value, lower and upper edge of the band: the 95% interval or ± one standard error."""
+        value = rows[self.column].to_numpy(dtype=float)
+        if self.probability:
+            return (value, rows[f"{self.column}_lo"].to_numpy(dtype=float),
+                    rows[f"{self.column}_hi"].to_numpy(dtype=float))
+        se = rows[f"{self.column}_se"].to_numpy(dtype=float)
+        return value, value - se, value + se
+
+    def text(self, row: pd.Series) -> str:
+        """``0.532 [0.501, 0.563]`` (95% interval) or ``1234.5 ± 12.3`` (standard error)."""
+        if self.probability:
+            p, lo, hi = (row[f"{self.column}{s}"] for s in ("", "_lo", "_hi"))
+            return "–" if np.isnan(p) else f"{p:.3f} [{lo:.3f}, {hi:.3f}]"
+        m, se = row[self.column], row[f"{self.column}_se"]
+        digits = 1 if self.unit == "s" else 3
+        return "–" if np.isnan(m) else f"{m:.{digits}f} ± {se:.{digits}f}"
+
+    @property
+    def axis(self) -> str:
+        if self.share_of_td:
+            return f"{self.label} (% of $t_d$)"
+        return self.label + (f" ({self.unit})" if self.unit else "")
+
+    @property
+    def header(self) -> str:
+        unit = " (fraction of t_d)" if self.share_of_td else f" ({self.unit})" if self.unit else ""
+        return self.label + unit + (" [95% interval]" if self.probability else " ± SE")
+
+
+P_S = Metric("P_s", "mission success P_s", True)
+P_D = Metric("P_d", "detection probability P_d", True)
+IMMEDIATE = Metric("immediate", "immediate notification", True)
+MISSION_TIME = Metric("mission_time", "mission time", False, "s")
+SEARCH_SHARE = Metric("search_share", "search share of mission time", False)
+REACHABILITY = Metric("reachability", "target reachability", False, share_of_td=True)
+
+_KEYS = {"rc": "r_c (m)", "drones": "N_m", "td": "t_d (s)", "p_miss": "p_miss",
+         "planner": "planner"}
+
+
+def _label(planner: str) -> str:
+    return get_planner(planner).label
+
+
+@contextmanager
+def _style() -> Iterator[None]:
+    with plt.rc_context({
+        "font.size": 9, "axes.titlesize": 9, "axes.labelsize": 9, "legend.fontsize": 9,
+        "xtick.labelsize": 8, "ytick.labelsize": 8, "axes.grid": True, "grid.alpha": 0.3,
+        "lines.linewidth": 1.3, "lines.markersize": 4,
+        "svg.hashsalt": "sarlink",  # the same SVG for the same data
+    }):
+        yield
+
+
+def _axes(fig: Figure | None, rows: int, cols: int, *,
+          sharey: bool | Literal["row"] = True) -> tuple[Figure, np.ndarray]:
+    """A grid of panels in ``fig`` (a new figure sized for the grid if None)."""
+    if fig is None:
+        fig = plt.figure(figsize=(3.3 * cols + 0.4, 2.7 * rows + 0.5), layout="constrained")
+    return fig, fig.subplots(rows, cols, squeeze=False, sharey=sharey)
+
+
+def _legend(fig: Figure, planners: Sequence[str] = PLANNERS) -> None:
+    """One legend for the whole figure, planners in the paper's order."""
+    handles = [Line2D([], [], color=STYLE[p][0], marker=STYLE[p][1]) for p in planners]
+    fig.legend(handles, [_label(p) for p in planners], loc="outside upper center",
+               ncols=len(planners), frameon=False)
+
+
+def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric) -> None:
+    """One line per planner of ``metric`` against column ``x``, with its band."""
+    for planner in PLANNERS:
+        sub = rows[rows["planner"] == planner].sort_values(x)
+        if sub.empty:
+            continue
+        colour, marker = STYLE[planner]
+        xs = sub[x].to_numpy(dtype=float)
+        value, lo, hi = metric.bounds(sub)
+        ax.plot(xs, value, color=colour, marker=marker, label=_label(planner))
+        ax.fill_between(xs, lo, hi, color=colour, alpha=_BAND, lw=0)
+    if metric.probability:
+        ax.set_ylim(-0.02, 1.02)
+    elif metric.share_of_td:
+        ax.yaxis.set_major_formatter(PercentFormatter(xmax=1.0))
+        ax.set_ylim(bottom=0)
+    ax.set_ylabel(metric.axis)
+
+
+def _versus_drones(axes: Sequence[Axes], rows: pd.DataFrame, metric: Metric,
+                   ranges: Sequence[float]) -> None:
+    """The metric against N_m, one panel per communication range: Figs. 3–6 and 7b."""
+    for ax, rc in zip(axes, ranges, strict=True):
+        _lines(ax, rows[rows["rc"] == rc], "drones", metric)
+        ax.set_title(f"$r_c$ = {rc:g} m")
+        ax.set_xlabel("number of drones $N_m$")
+        ax.set_xticks(DRONES[::2])
+    for ax in axes[1:]:
+        ax.set_ylabel("")
+
+
+def _at(table: pd.DataFrame, td: float) -> pd.DataFrame:
+    return table[table["td"] == td]
+
+
+@_style()
+def fig1(plan_times: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 1: plan computation time against N_m at r_c = 500 m; the median of the repeats,
+    the band spanning their minimum to maximum, a log time axis."""
+    fig, axes = _axes(fig, 1, 1)
+    ax = axes[0, 0]
+    stats = _plan_time_stats(plan_times)
+    for planner in PLAN_TIME_PLANNERS:
+        sub = stats[stats["planner"] == planner]
+        colour, marker = STYLE[planner]
+        ax.plot(sub["drones"], sub["median"], color=colour, marker=marker)
+        ax.fill_between(sub["drones"], sub["min"], sub["max"], color=colour, alpha=_BAND, lw=0)
+    ax.set(yscale="log", xlabel="number of drones $N_m$", ylabel="plan computation time (s)",
+           title="$r_c$ = 500 m", xticks=DRONES[::2])
+    _legend(fig, PLAN_TIME_PLANNERS)
+    return fig
+
+
+def _plan_time_stats(plan_times: pd.DataFrame) -> pd.DataFrame:
+    """Median, minimum and maximum seconds and the number of repeats per planner and N_m."""
+    stats = (plan_times.groupby(["planner", "drones"], sort=False)["seconds"]
+             .agg(["median", "min", "max", "count"]).reset_index())
+    return stats.sort_values(["planner", "drones"], key=lambda c: c.map(
+        {p: i for i, p in enumerate(PLANNERS)}) if c.name == "planner" else c)
+
+
+@_style()
+def fig2(curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 2: P_s against t_d from the empirical CDF of notification times; a row per team
+    size (10, 22), a panel per r_c."""
+    fig, axes = _axes(fig, len(FIG2_DRONES), len(RANGES))
+    for row, n in zip(axes, FIG2_DRONES, strict=True):
+        for ax, rc in zip(row, RANGES, strict=True):
+            sub = curve[(curve["drones"] == n) & (curve["rc"] == rc)]
+            _lines(ax, sub, "td", P_S)
+            ax.set_title(f"$N_m$ = {n}, $r_c$ = {rc:g} m")
+            ax.set_xlabel("target duration $t_d$ (s)")
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    for ax in axes.flat:
+        ax.set_xlim(0, TD_LONG)
+        ax.set_xticks(np.arange(0, TD_LONG + 1, 1000))
+    _legend(fig)
+    return fig
+
+
+@_style()
+def fig3(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 3: P_s against N_m at t_d = 2000 s, a panel per r_c."""
+    fig, axes = _axes(fig, 1, len(RANGES))
+    _versus_drones(axes[0], _at(main, TD_FIG3), P_S, RANGES)
+    _legend(fig)
+    return fig
+
+
+@_style()
+def fig4(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 4: (a) mission time and (b) search share against N_m at t_d = 4000 s, a column per
+    r_c."""
+    fig, axes = _axes(fig, 2, len(RANGES), sharey="row")
+    rows = _at(main, TD_LONG)
+    for panel, metric, tag in zip(axes, (MISSION_TIME, SEARCH_SHARE), "ab", strict=True):
+        _versus_drones(panel, rows, metric, RANGES)
+        panel[0].set_ylabel(f"({tag}) {panel[0].get_ylabel()}")
+    for ax in axes[1]:
+        ax.set_ylim(0, 1.02)
+    _legend(fig)
+    return fig
+
+
+@_style()
+def fig5(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 5: immediate notification against N_m at t_d = 4000 s, for r_c = 500 and 1000 m
+    (the paper leaves out 2000 m, where every planner is near 1; the tables have it)."""
+    fig, axes = _axes(fig, 1, len(FIG5_RANGES))
+    _versus_drones(axes[0], _at(main, TD_LONG), IMMEDIATE, FIG5_RANGES)
+    _legend(fig)
+    return fig
+
+
+@_style()
+def fig6(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 6: target reachability (share of t_d with a multihop route from the target to the
+    BS) against N_m at t_d = 4000 s, a panel per r_c."""
+    fig, axes = _axes(fig, 1, len(RANGES))
+    _versus_drones(axes[0], _at(main, TD_LONG), REACHABILITY, RANGES)
+    _legend(fig)
+    return fig
+
+
+@_style()
+def fig7(miss: pd.DataFrame, shadowing: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Fig. 7: (a) P_d against the miss probability, N_m = 10, r_c = 500 m, t_d = 1000 s;
+    (b) immediate notification against N_m with log-normal shadowing (σ = 3 dB),
+    r_c = 1000 m, t_d = 4000 s."""
+    fig, axes = _axes(fig, 1, 2, sharey=False)
+    a, b = axes[0]
+    _lines(a, miss, "p_miss", P_D)
+    a.set(xlabel="miss probability $p_{miss}$",
+          title=f"(a) $N_m$ = 10, $r_c$ = 500 m, $t_d$ = {TD_SHORT:g} s")
+    rc = float(shadowing["rc"].iloc[0])
+    _versus_drones([b], _at(shadowing, TD_LONG), IMMEDIATE, [rc])
+    b.set_title(f"(b) shadowing σ = {SIGMA:g} dB, $r_c$ = {rc:g} m, $t_d$ = {TD_LONG:g} s")
+    _legend(fig)
+    return fig
+
+
+def save(fig: Figure, folder: Path, name: str) -> list[Path]:
+    """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = [folder / f"{name}.png", folder / f"{name}.svg"]
+    fig.savefig(paths[0], dpi=200, metadata={"Software": None})
+    fig.savefig(paths[1], metadata={"Date": None})
+    plt.close(fig)
+    return paths
+
+
+# -- the plotted values, as text tables ---------------------------------------------------------
+
+
+def _values(rows: pd.DataFrame, keys: Sequence[str], metrics: Sequence[Metric]) -> pd.DataFrame:
+    """The plotted rows as text: the keys, then each metric with its interval."""
+    rows = rows.sort_values(keys, key=lambda c: c.map({p: i for i, p in enumerate(PLANNERS)})
+                            if c.name == "planner" else c)
+    out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else "{:g}".format)
+                        for k in keys})
+    for metric in metrics:
+        out[metric.header] = [metric.text(r) for _, r in rows.iterrows()]
+    return out.reset_index(drop=True)
+
+
+_VersusKeys = ["rc", "planner", "drones"]
+
+
+def _fig1_values(plan_times: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    stats = _plan_time_stats(plan_times)
+    return [("", pd.DataFrame({
+        "planner": stats["planner"].map(_label), "N_m": stats["drones"],
+        "median (s)": stats["median"].map("{:.4g}".format),
+        "min (s)": stats["min"].map("{:.4g}".format),
+        "max (s)": stats["max"].map("{:.4g}".format), "repeats": stats["count"],
+    }).reset_index(drop=True))]
+
+
+def _fig2_values(curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    rows = curve[curve["drones"].isin(FIG2_DRONES)]
+    return [("", _values(rows, ["drones", "rc", "planner", "td"], [P_S]))]
+
+
+def _main_values(td: float, metrics: Sequence[Metric], ranges: Sequence[float] = RANGES
+                 ) -> Callable[[pd.DataFrame], list[tuple[str, pd.DataFrame]]]:
+    def values(main: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+        rows = _at(main, td)
+        return [("", _values(rows[rows["rc"].isin(ranges)], _VersusKeys, metrics))]
+    return values
+
+
+def _fig7_values(miss: pd.DataFrame, shadowing: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    return [("(a) imperfect sensing", _values(miss, ["planner", "p_miss"], [P_D])),
+            ("(b) shadowing", _values(_at(shadowing, TD_LONG), _VersusKeys, [IMMEDIATE]))]
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A paper figure: what it shows, the summary tables it needs, how to draw it and the
+    values it plots (titled tables, one per panel group)."""
+
+    number: int
+    caption: str
+    tables: tuple[str, ...]
+    draw: Callable[..., Figure]
+    values: Callable[..., list[tuple[str, pd.DataFrame]]]
+
+
+FIGURES = {f.number: f for f in (
+    FigureSpec(1, "Plan computation time against the number of drones, r_c = 500 m "
+               "(median of the repeats; band: their range).", ("plan_times",), fig1,
+               _fig1_values),
+    FigureSpec(2, "Probability that the target information reaches the BS within t_d against "
+               "t_d, for N_m = 10 and 22.", ("curve",), fig2, _fig2_values),
+    FigureSpec(3, f"Probability that the target information reaches the BS within t_d against "
+               f"the number of drones, t_d = {TD_FIG3:g} s.", ("main",), fig3,
+               _main_values(TD_FIG3, [P_S])),
+    FigureSpec(4, f"Mission time (a) and the share of it spent searching (b) against the number "
+               f"of drones, t_d = {TD_LONG:g} s (bands: ± one standard error).", ("main",), fig4,
+               _main_values(TD_LONG, [MISSION_TIME, SEARCH_SHARE])),
+    FigureSpec(5, f"Probability of immediate notification (detection and BS notification at "
+               f"once) against the number of drones, t_d = {TD_LONG:g} s.", ("main",), fig5,
+               _main_values(TD_LONG, [IMMEDIATE], FIG5_RANGES)),
+    FigureSpec(6, f"Share of t_d during which the target has a multihop route to the BS "
+               f"against the number of drones, t_d = {TD_LONG:g} s (bands: ± one standard "
+               f"error).", ("main",), fig6, _main_values(TD_LONG, [REACHABILITY])),
+    FigureSpec(7, f"(a) Detection probability against the miss probability, N_m = 10, "
+               f"r_c = 500 m, t_d = {TD_SHORT:g} s; (b) immediate notification against the "
+               f"number of drones under log-normal shadowing (σ = {SIGMA:g} dB), r_c = 1000 m, "
+               f"t_d = {TD_LONG:g} s.", ("miss", "shadowing"), fig7, _fig7_values),
+)}
+"""Every figure by its number in the paper."""

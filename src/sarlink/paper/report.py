@@ -1,0 +1,287 @@
+"""The reproduction report, as Markdown and as one self-contained HTML file.
+
+Both are rendered from one list of blocks (headings, paragraphs, lists, tables, figures), so
+they say the same thing; Markdown links the PNG files beside it, HTML embeds them (base64), so
+``report.html`` can be mailed on its own. Tables are rendered here in a few lines, without a
+dependency.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import os
+import platform
+from collections.abc import Sequence
+from dataclasses import dataclass
+from importlib.metadata import version
+from pathlib import Path
+
+import pandas as pd
+
+from sarlink.config import Mission
+from sarlink.paper.experiments import (
+    CURVE_TDS,
+    DRONES,
+    P_MISS,
+    PLANNERS,
+    RANGES,
+    SEED,
+    SIGMA,
+    TD_FIG3,
+    TD_LONG,
+    TD_SHORT,
+)
+from sarlink.paper.figures import FIGURES
+from sarlink.paper.findings import Finding
+from sarlink.planners import get_planner
+
+__all__ = ["Stage", "machine", "write_report"]
+
+
+@dataclass(frozen=True)
+class Stage:
+    """A timed part of the reproduction."""
+
+    name: str
+    detail: str
+    seconds: float
+
+
+@dataclass(frozen=True)
+class _Heading:
+    text: str
+    level: int
+
+
+@dataclass(frozen=True)
+class _Para:
+    text: str
+
+
+@dataclass(frozen=True)
+class _List:
+    items: list[str]
+
+
+@dataclass(frozen=True)
+class _Table:
+    frame: pd.DataFrame
+    collapsed: str | None = None
+    """Summary line of a collapsible table, or None to show it open."""
+
+
+@dataclass(frozen=True)
+class _Image:
+    png: Path
+    caption: str
+
+
+_Block = _Heading | _Para | _List | _Table | _Image
+
+
+def machine() -> dict[str, str]:
+    """The CPU model, cores, Python and platform: what the timings were measured on."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as fh:
+            cpu = next((line.split(":", 1)[1].strip() for line in fh
+                        if line.startswith("model name")), cpu)
+    except OSError:
+        pass
+    return {"CPU": cpu, "cores": str(os.cpu_count()), "Python": platform.python_version(),
+            "platform": platform.platform(), "sarlink": version("sarlink"),
+            "numba": version("numba"), "numpy": version("numpy")}
+
+
+def _duration(seconds: float) -> str:
+    minutes, rest = divmod(seconds, 60)
+    return f"{int(minutes)} min {rest:.0f} s" if minutes else f"{rest:.1f} s"
+
+
+def _pairs(rows: Sequence[tuple[str, str]], header: tuple[str, str]) -> pd.DataFrame:
+    return pd.DataFrame(list(rows), columns=list(header))
+
+
+def _setting(runs: int, quick: bool) -> list[_Block]:
+    m = Mission()
+    labels = ", ".join(get_planner(p).label for p in PLANNERS)
+    rows = [
+        ("area a × a", f"{m.area.size:g} m × {m.area.size:g} m, BS at the centre"),
+        ("drone speed V_m", f"{m.team.speed:g} m/s"),
+        ("sensing range r", f"{m.sensing.r:g} m"),
+        ("time step, sensing period t_s", f"{m.timing.dt:g} s, {m.timing.ts:g} s"),
+        ("flight budget T_max", f"{m.team.flight_time:g} s"),
+        ("communication range r_c", ", ".join(f"{rc:g}" for rc in RANGES) + " m"),
+        ("team sizes N_m", f"{DRONES[0]} to {DRONES[-1]} in steps of {DRONES[1] - DRONES[0]}"),
+        ("planners", labels),
+        ("ConCov weight α; mTSP-ConB's mTSP drones N_r", f"{m.team.alpha:g}; {m.team.nr}"),
+        ("mTSP GA", f"population {m.mtsp.population}, {m.mtsp.iterations} iterations, "
+                    f"total distance"),
+        ("target durations t_d", f"Fig. 2: {CURVE_TDS[0]:g} to {CURVE_TDS[-1]:g} s; Fig. 3: "
+                                 f"{TD_FIG3:g} s; Figs. 4–6, 7b: {TD_LONG:g} s; "
+                                 f"Fig. 7a: {TD_SHORT:g} s"),
+        ("Fig. 7a miss probabilities (one look per pass)", ", ".join(f"{p:g}" for p in P_MISS)),
+        ("Fig. 7b shadowing", f"σ = {SIGMA:g} dB, n = {m.channel.pathloss_exponent:g}"),
+        ("runs per grid point", f"{runs}" + (" (quick; the paper's is 2000)" if quick else "")),
+        ("seed", f"{SEED} (common random numbers: run k of every point has the same target)"),
+        ("sarlink", version("sarlink")),
+    ]
+    return [_Heading("Setting", 2), _Table(_pairs(rows, ("parameter", "value")))]
+
+
+def _timing(seconds: float, stages: Sequence[Stage], workers: str) -> list[_Block]:
+    rows = [(s.name, s.detail, _duration(s.seconds)) for s in stages]
+    about = [(k, v) for k, v in machine().items()] + [("workers", workers)]
+    return [
+        _Heading("Time and machine", 2),
+        _Para(f"This reproduction took {_duration(seconds)} of wall time (simulation, plan "
+              "timing, tables and figures). Stored runs of an earlier call in the same output "
+              "folder are reused, not redone, so a resumed call takes less."),
+        _Table(pd.DataFrame(rows, columns=["stage", "what", "wall time"])),
+        _Table(_pairs(about, ("machine", ""))),
+    ]
+
+
+def _findings(findings: Sequence[Finding]) -> list[_Block]:
+    blocks: list[_Block] = [_Heading("Findings", 2)]
+    if not findings:
+        return [*blocks, _Para("The findings are checked on the runs of Figs. 2–6, which this "
+                               "reproduction did not include.")]
+    holding = sum(f.holds for f in findings)
+    blocks.append(_Para(
+        f"{holding} of {len(findings)} of the paper's findings hold in this reproduction. Each "
+        "is decided from the summary tables by the criterion quoted with it; all intervals are "
+        "95% (Wilson for probabilities, ± 1.96 standard errors for means, Newcombe for "
+        "differences, averages over team sizes with averaged bounds), and every comparison is "
+        "conservative, so a claim holds only where the intervals support it."))
+    for i, f in enumerate(findings, 1):
+        blocks += [_Heading(f"{i}. {f.claim} — {'holds' if f.holds else 'does not hold'}", 3),
+                   _Para("Criterion: " + " ".join(f.criterion.split())),
+                   _Para("Numbers:"), _List(f.evidence.splitlines())]
+        if not f.holds:
+            blocks += [_Para("What sarlink shows instead:"), _List(f.instead.splitlines())]
+    return blocks
+
+
+def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame]
+             ) -> list[_Block]:
+    blocks: list[_Block] = [_Heading("Figures", 2)]
+    for number, png in sorted(figures.items()):
+        spec = FIGURES[number]
+        blocks += [_Heading(f"Figure {number}", 3),
+                   _Image(png.relative_to(out), f"Figure {number}. {spec.caption}")]
+        for title, frame in spec.values(*(tables[t] for t in spec.tables)):
+            name = f"Figure {number}{' ' + title if title else ''}"
+            blocks.append(_Table(frame, f"{name}: the {len(frame)} plotted values"))
+    blocks.append(_Para("The summary tables behind every figure, with all measures, are in "
+                        "tables/ (CSV and Parquet); the runs themselves in runs/."))
+    return blocks
+
+
+def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
+              tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
+              stages: Sequence[Stage], seconds: float, workers: str) -> list[_Block]:
+    intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
+             "\"Connectivity considerations for mission planning of a search and rescue drone "
+             f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
+             f"{runs} runs per grid point.")
+    return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
+            *_findings(findings), *_setting(runs, quick), *_timing(seconds, stages, workers),
+            *_figures(out, figures, tables)]
+
+
+# -- rendering ----------------------------------------------------------------------------------
+
+
+def _md_table(frame: pd.DataFrame) -> str:
+    def row(cells: Sequence[object]) -> str:
+        return "| " + " | ".join(str(c).replace("|", "\\|") for c in cells) + " |"
+    lines = [row(frame.columns), "|" + "---|" * len(frame.columns)]
+    lines += [row(r) for r in frame.itertuples(index=False)]
+    return "\n".join(lines)
+
+
+def _markdown(blocks: Sequence[_Block]) -> str:
+    parts = []
+    for b in blocks:
+        match b:
+            case _Heading(text, level):
+                parts.append("#" * level + " " + text)
+            case _Para(text):
+                parts.append(text)
+            case _List(items):
+                parts.append("\n".join(f"- {item}" for item in items))
+            case _Table(frame, None):
+                parts.append(_md_table(frame))
+            case _Table(frame, summary):
+                parts.append(f"<details><summary>{html.escape(str(summary))}</summary>\n\n"
+                             f"{_md_table(frame)}\n\n</details>")
+            case _Image(png, caption):
+                parts.append(f"![{caption}]({png.as_posix()})\n\n*{caption}*")
+    return "\n\n".join(parts) + "\n"
+
+
+_CSS = """
+body { font-family: system-ui, sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em;
+       color: #222; line-height: 1.45; }
+h1, h2, h3 { line-height: 1.2; } h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; }
+table { border-collapse: collapse; margin: .5em 0 1em; font-size: .9em; }
+th, td { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
+th { background: #f3f3f3; } tr:nth-child(even) td { background: #fafafa; }
+img { max-width: 100%; } figcaption { font-style: italic; margin-bottom: 1em; }
+details { margin: .5em 0 1.2em; } summary { cursor: pointer; color: #245; }
+.holds { color: #176617; } .fails { color: #a32020; }
+"""
+
+
+def _html_table(frame: pd.DataFrame) -> str:
+    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in r) + "</tr>"
+                   for r in frame.itertuples(index=False))
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def _html(blocks: Sequence[_Block], out: Path) -> str:
+    parts = []
+    for b in blocks:
+        match b:
+            case _Heading(text, level):
+                css = ""
+                if level == 3 and text.endswith(("— holds", "— does not hold")):
+                    css = ' class="holds"' if text.endswith("— holds") else ' class="fails"'
+                parts.append(f"<h{level}{css}>{html.escape(text)}</h{level}>")
+            case _Para(text):
+                parts.append(f"<p>{html.escape(text)}</p>")
+            case _List(items):
+                parts.append("<ul>" + "".join(f"<li>{html.escape(i)}</li>" for i in items)
+                             + "</ul>")
+            case _Table(frame, None):
+                parts.append(_html_table(frame))
+            case _Table(frame, summary):
+                parts.append(f"<details><summary>{html.escape(str(summary))}</summary>"
+                             f"{_html_table(frame)}</details>")
+            case _Image(png, caption):
+                data = base64.b64encode((out / png).read_bytes()).decode()
+                parts.append(f'<figure><img src="data:image/png;base64,{data}" '
+                             f'alt="{html.escape(caption)}"><figcaption>{html.escape(caption)}'
+                             "</figcaption></figure>")
+    return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            "<title>sarlink: reproduction of the paper</title>"
+            f"<style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
+
+
+def write_report(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
+                 tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
+                 stages: Sequence[Stage], seconds: float, workers: str) -> tuple[Path, Path]:
+    """Write ``out/report.md`` and ``out/report.html``; return their paths.
+
+    ``figures`` maps figure numbers to their PNG files inside ``out``; ``tables`` holds the
+    summary tables the figures were drawn from; ``workers`` says what ran the simulations.
+    """
+    blocks = _document(out, runs=runs, quick=quick, figures=figures, tables=tables,
+                       findings=findings, stages=stages, seconds=seconds, workers=workers)
+    md, page = out / "report.md", out / "report.html"
+    md.write_text(_markdown(blocks), encoding="utf-8")
+    page.write_text(_html(blocks, out), encoding="utf-8")
+    return md, page

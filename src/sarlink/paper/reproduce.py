@@ -1,0 +1,163 @@
+"""Rerun the paper's evaluation: sweeps, plan timing, summary tables, figures, findings, report.
+
+Layout of the output folder::
+
+    runs/<experiment>/     the sweeps (sarlink.sweep folders: resumable, loadable with load)
+    plan_times.json        Fig. 1's measured plan times, with their setting and machine
+    tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
+                           plan_times
+    figures/figN.png|svg   one figure per paper figure
+    report.md, report.html the report (HTML self-contained)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from sarlink.config import ConfigError, Mission
+from sarlink.experiments import sweep
+from sarlink.paper.experiments import EXPERIMENTS, QUICK_RUNS, RUNS, plan_time_missions
+from sarlink.paper.figures import FIGURES, save
+from sarlink.paper.findings import Finding, check_all
+from sarlink.paper.report import Stage, machine, write_report
+from sarlink.plantime import plan_seconds
+
+__all__ = ["ReproductionResult", "reproduce"]
+
+PLAN_REPEATS = 3
+"""Timings per planner and team size in Fig. 1; the figure shows their median."""
+
+
+@dataclass(frozen=True)
+class ReproductionResult:
+    """What :func:`reproduce` made, and where."""
+
+    out: Path
+    runs: int
+    """Runs per grid point."""
+    figures: dict[int, list[Path]]
+    """Each figure's files (PNG, SVG) by its number."""
+    tables: dict[str, pd.DataFrame]
+    """Summary tables by name, as written to ``out/tables``."""
+    findings: list[Finding]
+    """The paper's findings checked (empty unless Figs. 2–6 were reproduced)."""
+    report_md: Path
+    report_html: Path
+    seconds: float
+    """Wall time of the call, report writing aside."""
+    stages: list[Stage]
+
+
+def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
+    if figures is None:
+        return sorted(FIGURES)
+    numbers = sorted(set(figures))
+    unknown = [n for n in numbers if n not in FIGURES]
+    if unknown or not numbers:
+        raise ConfigError(f"figures must be among {', '.join(map(str, FIGURES))}, "
+                          f"got {', '.join(map(str, numbers)) or 'none'}")
+    return numbers
+
+
+def _plan_times(path: Path, missions: list[Mission], repeats: int) -> pd.DataFrame:
+    """Fig. 1's plan times: read from ``path`` if measured there for the same missions and
+    repeats, otherwise measured now (one mission at a time, nothing else running) and stored."""
+    setting = {"missions": [m.model_dump(mode="json") for m in missions], "repeats": repeats}
+    if path.exists():
+        stored = json.loads(path.read_text())
+        if stored.get("setting") == setting:
+            return pd.DataFrame(stored["rows"])
+    rows = [{"planner": m.team.planner, "drones": m.team.drones, "rc": m.channel.rc,
+             "repeat": k, "seconds": plan_seconds(m)}
+            for m in missions for k in range(repeats)]
+    temporary = path.with_suffix(".tmp")
+    temporary.write_text(json.dumps({"setting": setting, "machine": machine(), "rows": rows},
+                                    indent=1))
+    os.replace(temporary, path)
+    return pd.DataFrame(rows)
+
+
+def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
+    folder.mkdir(parents=True, exist_ok=True)
+    for name, table in tables.items():
+        table.to_csv(folder / f"{name}.csv", index=False)
+        table.to_parquet(folder / f"{name}.parquet", index=False)
+
+
+def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
+              figures: Iterable[int] | None = None, workers: int | None = None,
+              scheduler: str | None = None, progress: bool = True,
+              plan_iterations: int | None = None) -> ReproductionResult:
+    """Rerun the experiments behind the paper's figures into ``out`` and report on them.
+
+    Only the sweeps the requested figures need are run; runs already stored in ``out`` (by an
+    earlier, perhaps interrupted, call) are reused, and so are Fig. 1's plan times when they
+    were measured for the same setting.
+
+    Parameters
+    ----------
+    runs
+        Runs per grid point; default 2000 (the paper's), or 100 with ``quick``.
+    quick
+        Few runs: the trends in minutes, with wide intervals. The report says so.
+    figures
+        Paper figure numbers (1–7) to reproduce; default all.
+    workers, scheduler
+        As for :func:`sarlink.sweep`: local worker processes, or a Dask scheduler's address.
+    progress
+        Show the sweeps' progress bars.
+    plan_iterations
+        GA iterations for Fig. 1's mTSP timing instead of the paper's 5000 (for tests only:
+        the time depends on it).
+    """
+    start = time.perf_counter()
+    out = Path(out)
+    numbers = _figure_numbers(figures)
+    runs = runs if runs is not None else QUICK_RUNS if quick else RUNS
+    if runs < 1:
+        raise ConfigError(f"runs must be at least 1, got {runs}")
+    stages: list[Stage] = []
+    tables: dict[str, pd.DataFrame] = {}
+    for exp in EXPERIMENTS.values():
+        if not set(exp.figures) & set(numbers):
+            continue
+        t0 = time.perf_counter()
+        folder = out / "runs" / exp.name
+        resumed = (folder / "experiment.json").exists()
+        experiment = exp.build(runs)
+        tables.update(exp.tables(sweep(experiment, folder, workers=workers, scheduler=scheduler,
+                                       progress=progress)))
+        points = len(experiment.points())
+        stages.append(Stage(f"sweep {exp.name}", f"{experiment.name}: {points} grid points × "
+                            f"{runs} runs" + (" (resumed)" if resumed else ""),
+                            time.perf_counter() - t0))
+    if 1 in numbers:
+        t0 = time.perf_counter()
+        missions = plan_time_missions(plan_iterations)
+        tables["plan_times"] = _plan_times(out / "plan_times.json", missions, PLAN_REPEATS)
+        stages.append(Stage("plan times", f"Fig. 1: {len(missions)} plans × {PLAN_REPEATS} "
+                            "repeats", time.perf_counter() - t0))
+
+    t0 = time.perf_counter()
+    _write_tables(out / "tables", tables)
+    findings = check_all(tables["main"]) if "main" in tables else []
+    drawn = {}
+    for n in numbers:
+        spec = FIGURES[n]
+        drawn[n] = save(spec.draw(*(tables[t] for t in spec.tables)), out / "figures", f"fig{n}")
+    stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
+                        time.perf_counter() - t0))
+    seconds = time.perf_counter() - start
+    where = (f"Dask scheduler {scheduler}" if scheduler is not None
+             else f"{workers or os.cpu_count()} local processes")
+    md, page = write_report(out, runs=runs, quick=quick,
+                            figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
+                            findings=findings, stages=stages, seconds=seconds, workers=where)
+    return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages)
