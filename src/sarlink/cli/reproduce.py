@@ -52,4 +52,4 @@ def reproduce(
                 if result.findings else "findings not checked (they need Figs. 2-6)")
     console.print(f"report: {result.report_html} and {result.report_md} "
                   f"({result.runs} runs per point, {result.seconds:.0f} s); {findings}",
-                  highlight=False)
+                  highlight=False, soft_wrap=True)

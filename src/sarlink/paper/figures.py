@@ -63,6 +63,8 @@ class Metric(NamedTuple):
     probability: bool
     """A probability has ``_lo``/``_hi`` Wilson bounds; a mean has ``_se``."""
     unit: str = ""
+    symbol: str = ""
+    """The paper's symbol, as TeX without the dollars (``P_s``)."""
     share_of_td: bool = False
     """A fraction of t_d, drawn as a percentage."""
 
@@ -86,18 +88,20 @@ class Metric(NamedTuple):
 
     @property
     def axis(self) -> str:
-        if self.share_of_td:
-            return f"{self.label} (% of $t_d$)"
-        return self.label + (f" ({self.unit})" if self.unit else "")
+        symbol = f" ${self.symbol}$" if self.symbol else ""
+        unit = " (% of $t_d$)" if self.share_of_td else f" ({self.unit})" if self.unit else ""
+        return self.label + symbol + unit
 
     @property
     def header(self) -> str:
+        symbol = f" {self.symbol}" if self.symbol else ""
         unit = " (fraction of t_d)" if self.share_of_td else f" ({self.unit})" if self.unit else ""
-        return self.label + unit + (" [95% interval]" if self.probability else " ± SE")
+        return (self.label + symbol + unit
+                + (" [95% interval]" if self.probability else " ± SE"))
 
 
-P_S = Metric("P_s", "mission success P_s", True)
-P_D = Metric("P_d", "detection probability P_d", True)
+P_S = Metric("P_s", "mission success", True, symbol="P_s")
+P_D = Metric("P_d", "detection probability", True, symbol="P_d")
 IMMEDIATE = Metric("immediate", "immediate notification", True)
 MISSION_TIME = Metric("mission_time", "mission time", False, "s")
 SEARCH_SHARE = Metric("search_share", "search share of mission time", False)
@@ -137,7 +141,7 @@ def _legend(fig: Figure, planners: Sequence[str] = PLANNERS) -> None:
                ncols=len(planners), frameon=False)
 
 
-def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric) -> None:
+def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric, markevery: int = 1) -> None:
     """One line per planner of ``metric`` against column ``x``, with its band."""
     for planner in PLANNERS:
         sub = rows[rows["planner"] == planner].sort_values(x)
@@ -146,13 +150,13 @@ def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric) -> None:
         colour, marker = STYLE[planner]
         xs = sub[x].to_numpy(dtype=float)
         value, lo, hi = metric.bounds(sub)
-        ax.plot(xs, value, color=colour, marker=marker, label=_label(planner))
+        ax.plot(xs, value, color=colour, marker=marker, markevery=markevery,
+                label=_label(planner))
         ax.fill_between(xs, lo, hi, color=colour, alpha=_BAND, lw=0)
-    if metric.probability:
+    if metric.probability or metric.share_of_td:
         ax.set_ylim(-0.02, 1.02)
-    elif metric.share_of_td:
-        ax.yaxis.set_major_formatter(PercentFormatter(xmax=1.0))
-        ax.set_ylim(bottom=0)
+    if metric.share_of_td:
+        ax.yaxis.set_major_formatter(PercentFormatter(xmax=1.0, decimals=0))
     ax.set_ylabel(metric.axis)
 
 
@@ -206,7 +210,7 @@ def fig2(curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
     for row, n in zip(axes, FIG2_DRONES, strict=True):
         for ax, rc in zip(row, RANGES, strict=True):
             sub = curve[(curve["drones"] == n) & (curve["rc"] == rc)]
-            _lines(ax, sub, "td", P_S)
+            _lines(ax, sub, "td", P_S, markevery=5)
             ax.set_title(f"$N_m$ = {n}, $r_c$ = {rc:g} m")
             ax.set_xlabel("target duration $t_d$ (s)")
         for ax in row[1:]:
@@ -271,10 +275,11 @@ def fig7(miss: pd.DataFrame, shadowing: pd.DataFrame, fig: Figure | None = None)
     a, b = axes[0]
     _lines(a, miss, "p_miss", P_D)
     a.set(xlabel="miss probability $p_{miss}$",
-          title=f"(a) $N_m$ = 10, $r_c$ = 500 m, $t_d$ = {TD_SHORT:g} s")
+          title=f"(a) imperfect sensing\n$N_m$ = 10, $r_c$ = 500 m, $t_d$ = {TD_SHORT:g} s")
     rc = float(shadowing["rc"].iloc[0])
     _versus_drones([b], _at(shadowing, TD_LONG), IMMEDIATE, [rc])
-    b.set_title(f"(b) shadowing σ = {SIGMA:g} dB, $r_c$ = {rc:g} m, $t_d$ = {TD_LONG:g} s")
+    b.set_title(f"(b) log-normal shadowing, σ = {SIGMA:g} dB\n"
+                f"$r_c$ = {rc:g} m, $t_d$ = {TD_LONG:g} s")
     _legend(fig)
     return fig
 

@@ -166,7 +166,10 @@ def _findings(findings: Sequence[Finding]) -> list[_Block]:
 
 def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame]
              ) -> list[_Block]:
-    blocks: list[_Block] = [_Heading("Figures", 2)]
+    blocks: list[_Block] = [_Heading("Figures", 2), _Para(
+        "Bands: 95% Wilson intervals around probabilities, ± one standard error around means. "
+        f"Up to N_r = {Mission().team.nr} drones mTSP-ConB flies the mTSP plan with all of its "
+        "drones, so there its line lies on mTSP's.")]
     for number, png in sorted(figures.items()):
         spec = FIGURES[number]
         blocks += [_Heading(f"Figure {number}", 3),
