@@ -141,16 +141,23 @@ def _legend(fig: Figure, planners: Sequence[str] = PLANNERS) -> None:
                ncols=len(planners), frameon=False)
 
 
-def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric, markevery: int = 1) -> None:
-    """One line per planner of ``metric`` against column ``x``, with its band."""
-    for planner in PLANNERS:
+def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric, *, dodge: float = 0.0,
+           markevery: int = 1) -> None:
+    """One line per planner of ``metric`` against column ``x``, with its band.
+
+    Planners often coincide (all at P = 1; mTSP-ConB on mTSP up to N_r drones). So that none
+    hides another, ``dodge`` shifts each planner's points sideways by that much per place in
+    the legend, and with ``markevery`` > 1 each planner marks a different subset of points.
+    """
+    middle = (len(PLANNERS) - 1) / 2
+    for i, planner in enumerate(PLANNERS):
         sub = rows[rows["planner"] == planner].sort_values(x)
         if sub.empty:
             continue
         colour, marker = STYLE[planner]
-        xs = sub[x].to_numpy(dtype=float)
+        xs = sub[x].to_numpy(dtype=float) + dodge * (i - middle)
         value, lo, hi = metric.bounds(sub)
-        ax.plot(xs, value, color=colour, marker=marker, markevery=markevery,
+        ax.plot(xs, value, color=colour, marker=marker, markevery=(i % markevery, markevery),
                 label=_label(planner))
         ax.fill_between(xs, lo, hi, color=colour, alpha=_BAND, lw=0)
     if metric.probability or metric.share_of_td:
@@ -164,7 +171,7 @@ def _versus_drones(axes: Sequence[Axes], rows: pd.DataFrame, metric: Metric,
                    ranges: Sequence[float]) -> None:
     """The metric against N_m, one panel per communication range: Figs. 3–6 and 7b."""
     for ax, rc in zip(axes, ranges, strict=True):
-        _lines(ax, rows[rows["rc"] == rc], "drones", metric)
+        _lines(ax, rows[rows["rc"] == rc], "drones", metric, dodge=0.2)
         ax.set_title(f"$r_c$ = {rc:g} m")
         ax.set_xlabel("number of drones $N_m$")
         ax.set_xticks(DRONES[::2])
@@ -273,7 +280,7 @@ def fig7(miss: pd.DataFrame, shadowing: pd.DataFrame, fig: Figure | None = None)
     r_c = 1000 m, t_d = 4000 s."""
     fig, axes = _axes(fig, 1, 2, sharey=False)
     a, b = axes[0]
-    _lines(a, miss, "p_miss", P_D)
+    _lines(a, miss, "p_miss", P_D, dodge=0.01)
     a.set(xlabel="miss probability $p_{miss}$",
           title=f"(a) imperfect sensing\n$N_m$ = 10, $r_c$ = 500 m, $t_d$ = {TD_SHORT:g} s")
     rc = float(shadowing["rc"].iloc[0])

@@ -169,7 +169,9 @@ def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame
     blocks: list[_Block] = [_Heading("Figures", 2), _Para(
         "Bands: 95% Wilson intervals around probabilities, ± one standard error around means. "
         f"Up to N_r = {Mission().team.nr} drones mTSP-ConB flies the mTSP plan with all of its "
-        "drones, so there its line lies on mTSP's.")]
+        "drones, so there its line lies on mTSP's. So that coinciding lines stay visible, each "
+        "planner's points are shifted slightly sideways against N_m and p_miss, and in Fig. 2 "
+        "each planner marks different t_d.")]
     for number, png in sorted(figures.items()):
         spec = FIGURES[number]
         blocks += [_Heading(f"Figure {number}", 3),
