@@ -115,6 +115,13 @@ def _label(planner: str) -> str:
     return get_planner(planner).label
 
 
+def _legend_order(column: pd.Series) -> pd.Series:
+    """A sort key that puts planners in the order of the paper's legends."""
+    if column.name != "planner":
+        return column
+    return column.map({p: i for i, p in enumerate(PLANNERS)})
+
+
 @contextmanager
 def _style() -> Iterator[None]:
     with plt.rc_context({
@@ -205,8 +212,7 @@ def _plan_time_stats(plan_times: pd.DataFrame) -> pd.DataFrame:
     """Median, minimum and maximum seconds and the number of repeats per planner and N_m."""
     stats = (plan_times.groupby(["planner", "drones"], sort=False)["seconds"]
              .agg(["median", "min", "max", "count"]).reset_index())
-    return stats.sort_values(["planner", "drones"], key=lambda c: c.map(
-        {p: i for i, p in enumerate(PLANNERS)}) if c.name == "planner" else c)
+    return stats.sort_values(["planner", "drones"], key=_legend_order)
 
 
 @_style()
@@ -306,8 +312,7 @@ def save(fig: Figure, folder: Path, name: str) -> list[Path]:
 
 def _values(rows: pd.DataFrame, keys: Sequence[str], metrics: Sequence[Metric]) -> pd.DataFrame:
     """The plotted rows as text: the keys, then each metric with its interval."""
-    rows = rows.sort_values(keys, key=lambda c: c.map({p: i for i, p in enumerate(PLANNERS)})
-                            if c.name == "planner" else c)
+    rows = rows.sort_values(keys, key=_legend_order)
     out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else "{:g}".format)
                         for k in keys})
     for metric in metrics:
@@ -315,7 +320,7 @@ def _values(rows: pd.DataFrame, keys: Sequence[str], metrics: Sequence[Metric]) 
     return out.reset_index(drop=True)
 
 
-_VersusKeys = ["rc", "planner", "drones"]
+_VERSUS_KEYS = ["rc", "planner", "drones"]
 
 
 def _fig1_values(plan_times: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
@@ -337,13 +342,13 @@ def _main_values(td: float, metrics: Sequence[Metric], ranges: Sequence[float] =
                  ) -> Callable[[pd.DataFrame], list[tuple[str, pd.DataFrame]]]:
     def values(main: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
         rows = _at(main, td)
-        return [("", _values(rows[rows["rc"].isin(ranges)], _VersusKeys, metrics))]
+        return [("", _values(rows[rows["rc"].isin(ranges)], _VERSUS_KEYS, metrics))]
     return values
 
 
 def _fig7_values(miss: pd.DataFrame, shadowing: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
     return [("(a) imperfect sensing", _values(miss, ["planner", "p_miss"], [P_D])),
-            ("(b) shadowing", _values(_at(shadowing, TD_LONG), _VersusKeys, [IMMEDIATE]))]
+            ("(b) shadowing", _values(_at(shadowing, TD_LONG), _VERSUS_KEYS, [IMMEDIATE]))]
 
 
 @dataclass(frozen=True)
