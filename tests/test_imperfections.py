@@ -81,12 +81,11 @@ def test_fraction_of_links_up_at_distance_d_is_the_normal_cdf(sigma: float,
     n, m, draws = 3, 5, 4000
     thr2 = np.empty((m, m))
     adj = np.zeros((m, 1), dtype=np.uint64)
-    near = np.zeros((m, 1), dtype=np.uint64)
     up = np.zeros((m, m))
     rng = np.random.default_rng(17)
     for _ in range(draws):
         _draw_shadowing(thr2, params, rng)
-        _links(px, py, n, True, thr2, rc * rc, h * h, adj, 0.0, near)
+        _links(px, py, n, True, thr2, rc * rc, h * h, adj)
         up += [[_linked(adj, a, b) for b in range(m)] for a in range(m)]
     for a in range(m):
         for b in range(a + 1, m):

@@ -155,23 +155,16 @@ def _link(adj: np.ndarray, a: int, b: int) -> None:
 @njit(cache=True)
 def _links(
     px: np.ndarray, py: np.ndarray, n: int, shadowed: bool, thr2: np.ndarray, rc2: float,
-    h2: float, adj: np.ndarray, r2: float, near: np.ndarray,
+    h2: float, adj: np.ndarray,
 ) -> None:
-    """Links among drones, BS (node n) and target (node n+1); drone-ground links add h².
-
-    ``near`` gets the pairs of drones within the sensing range (``d² <= r2``), which CovB uses.
-    """
+    """Links among drones, BS (node n) and target (node n+1); drone-ground links add h²."""
     adj[:] = 0
-    near[:] = 0
     for a in range(n):
         for b in range(a + 1, n):
             dx = px[a] - px[b]
             dy = py[a] - py[b]
-            dd = dx * dx + dy * dy
-            if dd <= (thr2[a, b] if shadowed else rc2):
+            if dx * dx + dy * dy <= (thr2[a, b] if shadowed else rc2):
                 _link(adj, a, b)
-            if dd <= r2:
-                _link(near, a, b)
     for g in range(n, n + 2):
         for a in range(g):
             dx = px[a] - px[g]
@@ -224,23 +217,21 @@ def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -
 @njit(cache=True)
 def _covb_force(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, r: float, near: np.ndarray,
+    mode: np.ndarray, r: float,
 ) -> tuple[float, float]:
     """Unit direction of Eq. 6: own heading / r plus a 1/d push from each drone within r."""
+    n = hx.shape[0]
     fx, fy = hx[i] / r, hy[i] / r
+    r2 = r * r
     neighbours = False
-    for w in range(near.shape[1]):
-        bits = near[i, w]
-        while bits:
-            low = bits & (~bits + _ONE)
-            bits ^= low
-            j = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
-            if mode[j] == LANDED:
-                continue
+    for j in range(n):
+        if j == i or mode[j] == LANDED:
+            continue
+        dx = px[i] - px[j]
+        dy = py[i] - py[j]
+        dd = dx * dx + dy * dy
+        if dd <= r2:
             neighbours = True
-            dx = px[i] - px[j]
-            dy = py[i] - py[j]
-            dd = dx * dx + dy * dy
             if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
                 fx += dx / dd
                 fy += dy / dd
@@ -318,7 +309,7 @@ def _conb_force(
 def _predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     p: Params, qx: np.ndarray, qy: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
-    near: np.ndarray, out: np.ndarray, stack: np.ndarray,
+    out: np.ndarray, stack: np.ndarray,
 ) -> None:
     """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range)."""
     n = hx.shape[0]
@@ -328,7 +319,7 @@ def _predict_routes(
         if j < n and mode[j] != LANDED:
             qx[j] += ahead * hx[j]
             qy[j] += ahead * hy[j]
-    _links(qx, qy, n, False, thr2, p.rc * p.rc, p.altitude * p.altitude, adj, 0.0, near)
+    _links(qx, qy, n, False, thr2, p.rc * p.rc, p.altitude * p.altitude, adj)
     _bs_component(adj, n, out, stack)
 
 
@@ -412,7 +403,6 @@ def simulate_kernel(
     shadowed = p.sigma > 0.0
     thr2 = np.full((m, m) if shadowed else (0, 0), p.rc * p.rc)
     adj = np.zeros((m, nw), dtype=np.uint64)
-    near = np.zeros((m, nw), dtype=np.uint64)  # drones within sensing range of each other
     routed = np.zeros(nw, dtype=np.uint64)
     flood = np.zeros(nw, dtype=np.uint64)
     stack = np.empty(m, dtype=np.int64)
@@ -420,7 +410,6 @@ def simulate_kernel(
     qx = np.empty(m)
     qy = np.empty(m)
     qadj = np.zeros((m, nw), dtype=np.uint64)
-    qnear = np.zeros((m, nw), dtype=np.uint64)
     routed_next = np.zeros(nw, dtype=np.uint64)
     nhx = np.empty(n)
     nhy = np.empty(n)
@@ -470,7 +459,7 @@ def simulate_kernel(
                         t_det = t
                         detector = i
             in_range[i] = now_in
-        _links(px, py, n, shadowed, thr2, rc2, h2, adj, r2, near)
+        _links(px, py, n, shadowed, thr2, rc2, h2, adj)
         _bs_component(adj, n, routed, stack)
         if t_det >= 0.0:
             flood[:] = 0
@@ -520,10 +509,10 @@ def simulate_kernel(
                 cx, cy = hx[i], hy[i]
                 vx, vy = hx[i], hy[i]
                 if p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0):
-                    cx, cy = _covb_force(i, px, py, hx, hy, mode, p.r, near)
+                    cx, cy = _covb_force(i, px, py, hx, hy, mode, p.r)
                 if p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0):
                     if not predicted:
-                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, thr2, qadj, qnear,
+                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, thr2, qadj,
                                         routed_next, stack)
                         predicted = True
                     vx, vy = _conb_force(i, px, py, hx, hy, mode, adj, routed_next, p)
