@@ -1,4 +1,5 @@
-# Two entry points for a fresh machine with Python 3.11 and pip: `make demo` and `make test`.
+# Two entry points for a fresh machine with Python 3.11 and pip: `make demo` (a quick
+# reproduction of the paper) and `make test`.
 # Each creates the virtual environment it needs (.venv) on first use.
 PYTHON ?= python3
 VENV ?= .venv
@@ -13,7 +14,7 @@ $(BIN)/sarlink: pyproject.toml
 	touch $@
 
 demo: $(BIN)/sarlink
-	$(BIN)/sarlink simulate --planner concov --drones 10 --rc 1000 --seed 7 --plot mission.png
+	$(BIN)/sarlink reproduce --quick --out reproduction
 
 lint: $(BIN)/sarlink
 	$(BIN)/ruff check src tests benchmarks
