@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import pickle
 import platform
 import resource
 import tempfile
@@ -34,6 +35,7 @@ from functools import partial
 from pathlib import Path
 
 from sarlink import Experiment, prepare, sweep
+from sarlink.storage import open_store, run_table
 
 
 def _machine() -> tuple[float, float]:
@@ -78,6 +80,38 @@ def run_kernel(experiment: Experiment) -> None:
             prepared.run(experiment.seed, run)
 
 
+def per_run_costs(experiment: Experiment, runs: int = 50, repeats: int = 20) -> dict[str, float]:
+    """CPU seconds per run of each step the sweep layer adds to a run, measured one by one.
+
+    Robust to other programs where the differences of whole phases are not: each step is
+    short, timed alone, and the fastest of ``repeats`` chunks of ``runs`` runs is kept.
+    """
+    _, mission = experiment.points()[0]
+    prepared = prepare(mission)
+    results = [prepared.run(experiment.seed, k) for k in range(runs)]
+    rows = [r.row() for r in results]
+    table = run_table(mission, experiment.seed, rows)
+    best: dict[str, float] = {}
+    with tempfile.TemporaryDirectory() as tmp, open_store(tmp, experiment) as store:
+        steps: dict[str, Callable[[], object]] = {
+            "RunResult.row()": lambda: [r.row() for r in results],
+            "rows to an Arrow table (storage.run_table)": lambda: run_table(
+                mission, experiment.seed, rows),
+            "table to the sweeping process (pickle both ways)": lambda: pickle.loads(
+                pickle.dumps(table)),
+            "Parquet file, atomic, fsync (Store.write)": lambda: store.write(
+                store.points[0], range(runs), table),
+        }
+        for name, step in steps.items():
+            times = []
+            for _ in range(repeats):
+                start = time.process_time()
+                step()
+                times.append(time.process_time() - start)
+            best[name] = min(times) / runs
+    return best
+
+
 def run_sweep(experiment: Experiment, out: Path, workers: int) -> None:
     df = sweep(experiment, out, workers=workers, progress=False)
     assert len(df) == experiment.runs * len(experiment.points())
@@ -100,6 +134,7 @@ def main() -> None:
     phases = {"kernel, in this process": measure(lambda: run_kernel(experiment))}
     kernel = phases["kernel, in this process"].cpu
     print(f"kernel: {kernel:.1f} s CPU for {total} runs", flush=True)
+    costs = per_run_costs(experiment)
     with tempfile.TemporaryDirectory() as tmp:
         phases["start-up: a sweep of 1 run per point, 2 workers"] = measure(
             lambda: run_sweep(experiment.model_copy(update={"runs": 1}), Path(tmp), 2))
@@ -137,6 +172,15 @@ def main() -> None:
         f"| speed-up, 2 workers over 1 | | {speedup:.2f}x | >= 1.8x |",
         "",
         f"Parquet on disk: {size / 2**20:.1f} MiB ({size / total:,.0f} bytes per run).",
+        "",
+        "Per-run work of the sweep layer, each step timed alone (fastest of 20 chunks of 50 "
+        "runs, CPU time), against the kernel's CPU time per run:",
+        "",
+        "| step | µs per run | share of the kernel |",
+        "|---|---|---|",
+        *(f"| {name} | {cost * 1e6:.1f} | {cost * total / kernel:.2%} |"
+          for name, cost in costs.items()),
+        f"| all | {sum(costs.values()) * 1e6:.1f} | {sum(costs.values()) * total / kernel:.2%} |",
         "",
     ]
     print("\n".join(lines))
