@@ -64,7 +64,7 @@ class Experiment(BaseModel):
     name: str = Field(min_length=1, description="a name for people; not part of the identity")
     seed: int = Field(ge=0, description="the one seed of every run of every grid point")
     runs: int = Field(ge=1, description="runs per grid point, indices 0 .. runs-1")
-    chunk: int = Field(50, ge=1, description="runs per task; results do not depend on it")
+    chunk: int = Field(100, ge=1, description="runs per task; results do not depend on it")
     mission: Mission = Field(default_factory=Mission, description="the base mission")
     grid: dict[str, list[Any]] = Field(default_factory=dict,
                                        description="flat parameter -> values to try")
