@@ -1,16 +1,17 @@
 """Sweep layer: overhead over pure kernel time, and the speed-up of 2 workers over 1.
 
 A sweep of 20,000 runs (the paper's setting: 10 drones, 4000 s; CovB and ConB x r_c 500 and
-1000 m, 5000 runs each) is timed three ways:
+1000 m, 5000 runs each) is timed against the bare kernel doing the same runs on as many cores:
 
-- kernel: ``prepare`` once per grid point and ``Prepared.run`` per run, in this process: the
-  work no sweep can avoid;
-- ``sweep`` with 1 worker and with 2 workers, from the call to the returned DataFrame: worker
-  start-up, task transfer, result rows, Parquet files, and the DataFrame.
+- bare kernel on ``w`` cores: ``w`` processes, started and warmed up beforehand, each call
+  ``prepare`` once per grid point and ``Prepared.run`` for an equal share of the runs, and
+  nothing else; the wall time from a common start to the last one's end;
+- ``sweep`` with ``w`` workers, from the call to the returned DataFrame: worker start-up,
+  tasks, result rows, transfer, Parquet files, the DataFrame.
 
-Overhead with ``w`` workers = (wall time x w) / kernel time - 1: the share of the workers'
-core time not spent in the kernel. The CPU time of the sweeping process and its (finished)
-workers gives a second figure, CPU time / kernel time - 1. Run with
+Overhead with ``w`` workers = sweep wall time / bare-kernel wall time on ``w`` cores - 1: what
+the sweep layer adds. Comparing with the kernel on as many cores (not with one core times
+``w``) keeps out what the machine itself loses when all its cores are busy. Run with
 
     python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
@@ -24,16 +25,17 @@ time stolen by the hypervisor; and each step the sweep adds to a run is also tim
 from __future__ import annotations
 
 import argparse
+import multiprocessing
 import os
 import pickle
 import platform
-import resource
 import tempfile
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
+from typing import Any
 
 from sarlink import Experiment, prepare, sweep
 from sarlink.storage import open_store, run_table
@@ -50,35 +52,56 @@ def _machine() -> tuple[float, float]:
     return (user + nice + system + irq + softirq) / tick, steal / tick
 
 
-def _own_cpu() -> float:
-    """CPU seconds of this process and of its children that have ended."""
-    children = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return time.process_time() + children.ru_utime + children.ru_stime
-
-
 @dataclass(frozen=True)
 class Phase:
     wall: float
-    cpu: float
-    """this process and its workers"""
     others: float
-    """CPU used meanwhile by the rest of the machine"""
+    """CPU seconds used meanwhile by the rest of the machine (beyond our ``cores``)"""
     stolen: float
 
 
-def measure(work: Callable[[], object]) -> Phase:
-    wall, cpu, (busy, steal) = time.perf_counter(), _own_cpu(), _machine()
-    work()
-    wall, cpu = time.perf_counter() - wall, _own_cpu() - cpu
+def measure(work: Callable[[], float | None], cores: int) -> Phase:
+    """Time ``work``; it may return its own, more exact wall time."""
+    start, (busy, steal) = time.perf_counter(), _machine()
+    inner = work()
+    wall = time.perf_counter() - start
     busy_after, steal_after = _machine()
-    return Phase(wall, cpu, max(busy_after - busy - cpu, 0.0), steal_after - steal)
+    others = max(busy_after - busy - cores * wall, 0.0)  # our processes keep `cores` busy
+    return Phase(wall if inner is None else inner, others, steal_after - steal)
 
 
-def run_kernel(experiment: Experiment) -> None:
-    for _, mission in experiment.points():
-        prepared = prepare(mission)
-        for run in range(experiment.runs):
-            prepared.run(experiment.seed, run)
+def _kernel_share(experiment_json: str, share: int, of: int, barrier: Any, spans: Any) -> None:
+    """Runs ``share, share + of, ...`` of every grid point, after a common start."""
+    experiment = Experiment.model_validate_json(experiment_json)
+    prepared = [prepare(mission) for _, mission in experiment.points()]
+    for p in prepared:
+        p.run(0, 0)  # load the Numba cache before the start
+    barrier.wait()
+    start, cpu = time.monotonic(), time.process_time()
+    for p in prepared:
+        for run in range(share, experiment.runs, of):
+            p.run(experiment.seed, run)
+    spans.put((start, time.monotonic(), time.process_time() - cpu))
+
+
+def bare_kernel(experiment: Experiment, cores: int) -> tuple[float, float]:
+    """Wall time and total CPU time of the bare kernel doing the experiment's runs on
+    ``cores`` processes."""
+    context = multiprocessing.get_context("spawn")
+    barrier, spans = context.Barrier(cores), context.Queue()
+    procs = [context.Process(target=_kernel_share, args=(
+        experiment.model_dump_json(), i, cores, barrier, spans)) for i in range(cores)]
+    for proc in procs:
+        proc.start()
+    done = [spans.get() for _ in procs]
+    for proc in procs:
+        proc.join()
+    return max(end for _, end, _ in done) - min(s for s, _, _ in done), sum(c for *_, c in done)
+
+
+def run_sweep(experiment: Experiment, out: Path, workers: int) -> None:
+    df = sweep(experiment, out, workers=workers, progress=False)
+    assert len(df) == experiment.runs * len(experiment.points())
 
 
 def per_run_costs(experiment: Experiment, repeats: int = 20) -> dict[str, float]:
@@ -114,16 +137,11 @@ def per_run_costs(experiment: Experiment, repeats: int = 20) -> dict[str, float]
     return best
 
 
-def run_sweep(experiment: Experiment, out: Path, workers: int) -> None:
-    df = sweep(experiment, out, workers=workers, progress=False)
-    assert len(df) == experiment.runs * len(experiment.points())
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=5000, help="runs per grid point (4 points)")
-    parser.add_argument("--repeats", type=int, default=2,
-                        help="rounds of (kernel, 1 worker, 2 workers); the fastest of each counts")
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="interleaved rounds of every phase; the fastest of each counts")
     parser.add_argument("--out", type=Path, default=None, help="write a Markdown report here")
     args = parser.parse_args()
 
@@ -133,28 +151,36 @@ def main() -> None:
         "grid": {"planner": ["covb", "conb"], "rc": [500.0, 1000.0]},
     })
     total = args.runs * len(experiment.points())
-    for _, mission in experiment.points():  # compile or load the Numba cache outside the timing
-        prepare(mission).run(0, 0)
-    names = ["kernel, in this process", "start-up: a sweep of 1 run per point, 2 workers",
-             "sweep, 1 worker", "sweep, 2 workers", "resume of the finished sweep"]
-    samples: dict[str, list[Phase]] = {name: [] for name in names}
+    kernel_cpu = float("inf")
+    samples: dict[str, list[Phase]] = {}
     size = 0
+
+    def sample(name: str, work: Callable[[], float | None], cores: int) -> None:
+        samples.setdefault(name, []).append(measure(work, cores))
+
+    def kernel(cores: int) -> float:
+        nonlocal kernel_cpu
+        wall, cpu = bare_kernel(experiment, cores)
+        kernel_cpu = min(kernel_cpu, cpu)
+        return wall
+
     for _ in range(args.repeats):  # interleaved, so that a slow spell hits every phase alike
-        samples[names[0]].append(measure(partial(run_kernel, experiment)))
-        with tempfile.TemporaryDirectory() as tmp:
-            samples[names[1]].append(measure(partial(
-                run_sweep, experiment.model_copy(update={"runs": 1}), Path(tmp), 2)))
-        for workers, name in ((1, names[2]), (2, names[3])):
+        for workers in (1, 2):
+            sample(f"bare kernel, {workers} core{'s' * (workers > 1)}",
+                   partial(kernel, workers), workers)
             with tempfile.TemporaryDirectory() as tmp:
                 again = partial(run_sweep, experiment, Path(tmp), workers)
-                samples[name].append(measure(again))
+                sample(f"sweep, {workers} worker{'s' * (workers > 1)}", again, workers)
                 if workers == 2:
-                    samples[names[4]].append(measure(again))
+                    sample("resume of the finished sweep (check every file)", again, 1)
                     size = sum(p.stat().st_size for p in Path(tmp).rglob("*.parquet"))
+        with tempfile.TemporaryDirectory() as tmp:
+            sample("start-up: a sweep of 1 run per point, 2 workers", partial(
+                run_sweep, experiment.model_copy(update={"runs": 1}), Path(tmp), 2), 2)
         print({name: round(s[-1].wall, 1) for name, s in samples.items()}, flush=True)
     best = {name: min(s, key=lambda p: p.wall) for name, s in samples.items()}
-    kernel = min(p.cpu for p in samples[names[0]])
-    one, two = best[names[2]], best[names[3]]
+    walls = {w: (best[f"bare kernel, {w} core{'s' * (w > 1)}"].wall,
+                 best[f"sweep, {w} worker{'s' * (w > 1)}"].wall) for w in (1, 2)}
     costs = per_run_costs(experiment)
 
     lines = [
@@ -163,34 +189,37 @@ def main() -> None:
         f"{platform.python_version()}.",
         "",
         f"{total:,} runs: CovB and ConB x r_c 500 and 1000 m, 10 drones, 4000 s, chunks of "
-        f"{experiment.chunk} runs; kernel {kernel / total * 1e3:.2f} ms CPU per run. Each phase "
-        f"ran {args.repeats} times, interleaved; the fastest counts (walls of all: last column).",
+        f"{experiment.chunk} runs; bare kernel {kernel_cpu / total * 1e3:.2f} ms CPU per run. "
+        f"Every phase ran {args.repeats} times, interleaved; the fastest counts.",
         "",
-        "| phase | wall (s) | CPU, ours (s) | CPU, rest of the machine (s) | stolen (s) "
+        "| phase | wall (s), fastest | CPU of the rest of the machine (s) | stolen (s) "
         "| all walls (s) |",
-        "|---|---|---|---|---|---|",
-        *(f"| {name} | {p.wall:.1f} | {p.cpu:.1f} | {p.others:.1f} | {p.stolen:.1f} | "
+        "|---|---|---|---|---|",
+        *(f"| {name} | {p.wall:.1f} | {p.others:.1f} | {p.stolen:.1f} | "
           f"{', '.join(f'{q.wall:.1f}' for q in samples[name])} |" for name, p in best.items()),
         "",
         "| result | 1 worker | 2 workers | target |",
         "|---|---|---|---|",
-        f"| overhead by wall time (wall x workers / kernel - 1) | {one.wall / kernel - 1:+.1%} "
-        f"| {2 * two.wall / kernel - 1:+.1%} | < 5% |",
-        f"| overhead by CPU time (CPU / kernel - 1) | {one.cpu / kernel - 1:+.1%} "
-        f"| {two.cpu / kernel - 1:+.1%} | < 5% |",
-        f"| runs per second | {total / one.wall:,.0f} | {total / two.wall:,.0f} | |",
-        f"| speed-up, 2 workers over 1 | | {one.wall / two.wall:.2f}x | >= 1.8x |",
+        "| overhead: sweep wall / bare-kernel wall on as many cores - 1 | "
+        + " | ".join(f"{sweep_wall / bare - 1:+.1%}" for bare, sweep_wall in walls.values())
+        + " | < 5% |",
+        "| runs per second | " + " | ".join(f"{total / s:,.0f}" for _, s in walls.values())
+        + " | |",
+        f"| speed-up of the sweep, 2 workers over 1 | | {walls[1][1] / walls[2][1]:.2f}x "
+        "| >= 1.8x |",
+        f"| speed-up of the bare kernel, 2 cores over 1 | | {walls[1][0] / walls[2][0]:.2f}x | |",
         "",
         f"Parquet on disk: {size / 2**20:.1f} MiB ({size / total:,.0f} bytes per run).",
         "",
         f"Per-run work of the sweep layer, each step timed alone (fastest of 20 chunks of "
-        f"{experiment.chunk} runs, CPU time), against the kernel's CPU time per run:",
+        f"{experiment.chunk} runs, CPU time), against the bare kernel's CPU time per run:",
         "",
         "| step | µs per run | share of the kernel |",
         "|---|---|---|",
-        *(f"| {name} | {cost * 1e6:.1f} | {cost * total / kernel:.2%} |"
+        *(f"| {name} | {cost * 1e6:.1f} | {cost * total / kernel_cpu:.2%} |"
           for name, cost in costs.items()),
-        f"| all | {sum(costs.values()) * 1e6:.1f} | {sum(costs.values()) * total / kernel:.2%} |",
+        f"| all | {sum(costs.values()) * 1e6:.1f} "
+        f"| {sum(costs.values()) * total / kernel_cpu:.2%} |",
         "",
     ]
     print("\n".join(lines))
