@@ -63,3 +63,10 @@ def test_toml_file_is_checked(tmp_path) -> None:
     bad.write_text("[team]\ndrones = 22\nspeeed = 4\n")
     with pytest.raises(ConfigError, match=r"team\.speeed: Extra inputs are not permitted"):
         Mission.from_toml(bad)
+
+
+def test_toml_syntax_errors_name_the_file(tmp_path) -> None:
+    broken = tmp_path / "broken.toml"
+    broken.write_text("[team\ndrones = 3\n")
+    with pytest.raises(ConfigError, match=r"broken\.toml"):
+        Mission.from_toml(broken)

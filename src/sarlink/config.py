@@ -24,6 +24,7 @@ from pydantic import (
 __all__ = [
     "Area",
     "Channel",
+    "Checked",
     "ConfigError",
     "Mission",
     "Mtsp",
@@ -37,13 +38,34 @@ class ConfigError(ValueError):
     """A configuration value is invalid; the message names the field and the allowed range."""
 
 
-class _Model(BaseModel):
+class Checked(BaseModel):
+    """A frozen, strict model whose constructors from data raise :class:`ConfigError`."""
+
     model_config = ConfigDict(
         frozen=True, extra="forbid", validate_default=True, allow_inf_nan=False
     )
 
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> Self:
+        """Build from nested ``{field: value}`` data; errors name the field."""
+        try:
+            return cls.model_validate(data)
+        except ValidationError as exc:
+            raise ConfigError(_describe(exc)) from None
 
-class Area(_Model):
+    @classmethod
+    def from_toml(cls, path: str | Path) -> Self:
+        """Build from a TOML file whose tables mirror the model's fields."""
+        with open(path, "rb") as fh:
+            try:
+                data = tomllib.load(fh)
+            except tomllib.TOMLDecodeError as exc:
+                raise ConfigError(f"{path}: {exc}") from None
+        return cls.from_dict(data)
+
+
+
+class Area(Checked):
     """The square search area ``[0, size]²`` and the base station (BS) on the ground."""
 
     size: float = Field(4000.0, gt=0, description="side a of the square area, m")
@@ -65,7 +87,7 @@ class Area(_Model):
         return self.bs if self.bs is not None else (self.size / 2, self.size / 2)
 
 
-class Team(_Model):
+class Team(Checked):
     """The drones and the planner that steers them."""
 
     drones: int = Field(10, ge=1, le=1000, description="number of drones N_m")
@@ -86,7 +108,7 @@ class Team(_Model):
         return name
 
 
-class Sensing(_Model):
+class Sensing(Checked):
     """The drones' target sensor (Eq. 2) and its imperfection (Section 4.3)."""
 
     r: float = Field(500.0, gt=0, description="sensing range r, m")
@@ -98,7 +120,7 @@ class Sensing(_Model):
     )
 
 
-class Channel(_Model):
+class Channel(Checked):
     """Radio links: disc model (Eq. 4), optionally with log-normal shadowing (Eq. 13)."""
 
     rc: float = Field(1000.0, gt=0, description="communication range r_c, m")
@@ -112,7 +134,7 @@ class Channel(_Model):
     )
 
 
-class Timing(_Model):
+class Timing(Checked):
     """Time step, sensing period, horizon and the grid of cumulative records."""
 
     dt: float = Field(1.0, gt=0, description="time increment t_i, s")
@@ -123,7 +145,7 @@ class Timing(_Model):
     )
 
 
-class Mtsp(_Model):
+class Mtsp(Checked):
     """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings."""
 
     solver: Literal["ga", "ortools"] = Field(
@@ -148,8 +170,11 @@ def _multiple_of(value: float, dt: float) -> bool:
 _GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "mtsp")
 
 
-class Mission(_Model):
-    """One mission: everything a run depends on besides the seed and the run index."""
+class Mission(Checked):
+    """One mission: everything a run depends on besides the seed and the run index.
+
+    ``Mission.from_toml`` reads tables ``[area]``, ``[team]``, ... (all optional).
+    """
 
     area: Area = Field(default_factory=Area)
     team: Team = Field(default_factory=Team)
@@ -180,20 +205,6 @@ class Mission(_Model):
     def build(cls, **params: Any) -> Mission:
         """A mission from flat parameters, e.g. ``Mission.build(drones=22, rc=500)``."""
         return cls().replace(**params)
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> Mission:
-        """A mission from nested ``{group: {field: value}}`` data; errors name the field."""
-        try:
-            return cls.model_validate(data)
-        except ValidationError as exc:
-            raise ConfigError(_describe(exc)) from None
-
-    @classmethod
-    def from_toml(cls, path: str | Path) -> Mission:
-        """A mission from a TOML file with tables ``[area]``, ``[team]``, ... (all optional)."""
-        with open(path, "rb") as fh:
-            return cls.from_dict(tomllib.load(fh))
 
     # -- flat view ----------------------------------------------------------------------------
 

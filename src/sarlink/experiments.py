@@ -20,7 +20,6 @@ import signal
 import sys
 import threading
 import time
-import tomllib
 from collections.abc import Generator, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from contextlib import ExitStack, closing, contextmanager
@@ -29,7 +28,7 @@ from typing import Any, NamedTuple, Self
 
 import pandas as pd
 import pyarrow as pa
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
@@ -42,7 +41,7 @@ from rich.progress import (
 from rich.text import Text
 
 from sarlink import storage
-from sarlink.config import ConfigError, Mission, _describe, param_groups
+from sarlink.config import Checked, ConfigError, Mission, param_groups
 from sarlink.engine import prepare
 
 __all__ = ["Experiment", "sweep"]
@@ -52,14 +51,14 @@ def _label(params: dict[str, Any]) -> str:
     return ", ".join(f"{k}={v!r}" for k, v in params.items()) or "(the base mission)"
 
 
-class Experiment(BaseModel):
+class Experiment(Checked):
     """A base mission, a grid of parameter values, and ``runs`` runs of every grid point.
 
     ``grid`` maps flat mission parameters (``planner``, ``drones``, ``rc``, ``p_miss``, ...; see
     :meth:`Mission.params`) to the values to try; the grid points are their cartesian product.
+    ``Experiment.from_toml`` reads ``name``, ``seed``, ``runs``, ``chunk``, ``[mission.*]``
+    (the tables of :class:`Mission`) and ``[grid]``.
     """
-
-    model_config = ConfigDict(frozen=True, extra="forbid")
 
     name: str = Field(min_length=1, description="a name for people; not part of the identity")
     seed: int = Field(ge=0, description="the one seed of every run of every grid point")
@@ -85,27 +84,6 @@ class Experiment(BaseModel):
     def _valid_points(self) -> Self:
         self.points()
         return self
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> Experiment:
-        """An experiment from nested data; errors are :class:`ConfigError` naming the field."""
-        try:
-            return cls.model_validate(data)
-        except ValidationError as exc:
-            raise ConfigError(_describe(exc)) from None
-
-    @classmethod
-    def from_toml(cls, path: str | Path) -> Experiment:
-        """An experiment file: ``name``, ``seed``, ``runs``, ``chunk``, ``[mission.*]``, ``[grid]``.
-
-        ``[mission]`` has the tables of :meth:`Mission.from_toml` (``[mission.team]``, ...).
-        """
-        with open(path, "rb") as fh:
-            try:
-                data = tomllib.load(fh)
-            except tomllib.TOMLDecodeError as exc:
-                raise ConfigError(f"{path}: {exc}") from None
-        return cls.from_dict(data)
 
     def points(self) -> list[tuple[dict[str, Any], Mission]]:
         """Every grid point, in grid order (the last parameter varies fastest).
