@@ -210,3 +210,21 @@ def test_empty_folder_loads_as_no_rows(tmp_path: Path) -> None:
         pass
     df = load(tmp_path)
     assert df.empty and {"point", "run", "planner"} <= set(df.columns)
+
+
+def test_renamed_column_is_caught_and_older_files_still_load(tmp_path: Path) -> None:
+    """A damaged footer may rename a column yet read fine; a file written before a parameter
+    existed lacks its column and still loads, with nulls there."""
+    fill(tmp_path, experiment())
+    first, second = files(tmp_path)[:2]
+    table = pq.read_table(first)
+    renamed = table.rename_columns(["chec\0point" if n == "checkpoint" else n
+                                    for n in table.column_names])
+    pq.write_table(renamed.replace_schema_metadata(table.schema.metadata), first)
+    table = pq.read_table(second)
+    meta = {**table.schema.metadata, b"sarlink.columns": json.dumps(
+        [n for n in table.column_names if n != "altitude"]).encode()}
+    pq.write_table(table.drop_columns(["altitude"]).replace_schema_metadata(meta), second)
+    with pytest.warns(UserWarning, match="columns are not those it was written with"):
+        df = load(tmp_path)
+    assert len(df) == 24 - 6 and df.altitude.isna().sum() == 6

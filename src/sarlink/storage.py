@@ -53,6 +53,7 @@ FORMAT = 1
 _FILE = re.compile(r"runs-(\d+)-(\d+)\.parquet")
 _POINT_KEY = b"sarlink.point"
 _SEED_KEY = b"sarlink.seed"
+_COLUMNS_KEY = b"sarlink.columns"
 
 
 def mission_hash(mission: Mission) -> str:
@@ -104,8 +105,9 @@ def _param_columns() -> dict[str, _Column]:
 def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa.Table:
     """Runs of ``mission`` as one tidy table: seed, run, every flat parameter, the outcomes.
 
-    ``rows`` are :meth:`sarlink.RunResult.row` records. The point's hash and the seed are kept
-    in the schema metadata, so a file can be checked against the folder it lies in.
+    ``rows`` are :meth:`sarlink.RunResult.row` records. The point's hash, the seed and the
+    column names are kept in the schema metadata, so that a file can be checked against the
+    folder it lies in and a damaged footer that renames columns is caught.
     """
     outcomes = pa.Table.from_pylist(list(rows))
     params = mission.params()
@@ -120,7 +122,8 @@ def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa
            for name, col in _param_columns().items()},
         **{name: outcomes[name] for name in outcomes.column_names if name not in ("seed", "run")},
     }
-    meta = {_POINT_KEY: mission_hash(mission).encode(), _SEED_KEY: str(seed).encode()}
+    meta = {_POINT_KEY: mission_hash(mission).encode(), _SEED_KEY: str(seed).encode(),
+            _COLUMNS_KEY: json.dumps(list(columns)).encode()}
     return pa.table(columns).replace_schema_metadata(meta)
 
 
@@ -131,12 +134,9 @@ def _problem(table: pa.Table, point: str, seed: int, runs: range) -> str | None:
         return "it belongs to another grid point"
     if meta.get(_SEED_KEY) != str(seed).encode():
         return "it was made with another seed"
-    types = dict(zip(table.column_names, table.schema.types, strict=True))
-    expected = {"seed": pa.int64(), "run": pa.int64(),
-                **{name: col.type for name, col in _param_columns().items()}}
-    wrong = [name for name, kind in expected.items() if types.get(name) != kind]
-    if wrong:  # a damaged footer can rename or retype columns without failing to read
-        return f"its columns {', '.join(wrong)} are missing or of another type"
+    written = meta.get(_COLUMNS_KEY)  # absent in files of sarlink 0.1.0 before it was kept
+    if written is not None and written != json.dumps(table.column_names).encode():
+        return "its columns are not those it was written with"  # a damaged footer
     if not np.array_equal(table["run"].to_numpy(), np.arange(runs.start, runs.stop)):
         return f"it does not hold exactly runs {runs.start} to {runs.stop - 1}"
     return None
@@ -376,6 +376,8 @@ def _frame(stored: Sequence[_Stored], runs: int) -> pd.DataFrame:
     df = pa.concat_tables(tables, promote_options="default").to_pandas()
     firsts = np.flatnonzero(np.diff(df["point"].to_numpy(), prepend=-1))
     for name, col in _param_columns().items():
+        if name not in df:  # a parameter newer than the files
+            continue
         if pa.types.is_list(col.type):  # hashable values, so that one can group by them
             heads = df[name].iloc[firsts]
             df[name] = df["point"].map(
