@@ -78,6 +78,7 @@ def test_fraction_of_links_up_at_distance_d_is_the_normal_cdf(sigma: float,
     # drones 0-2, BS (3), target (4): distances from 0.5 r_c to 1.4 r_c
     px = np.array([0.0, 800.0, 0.0, 1300.0, 0.0])
     py = np.array([0.0, 0.0, 1150.0, 0.0, 500.0])
+    pz = np.array([h, h, h, 0.0, 0.0])  # drones fly at h, the BS and target are on the ground
     n, m, draws = 3, 5, 4000
     thr2 = np.empty((m, m))
     adj = np.zeros((m, 1), dtype=np.uint64)
@@ -85,7 +86,7 @@ def test_fraction_of_links_up_at_distance_d_is_the_normal_cdf(sigma: float,
     rng = np.random.default_rng(17)
     for _ in range(draws):
         _draw_shadowing(thr2, params, rng)
-        _links(px, py, n, True, thr2, rc * rc, h * h, adj)
+        _links(px, py, pz, thr2, adj, 0.0, adj[:0])
         up += [[_linked(adj, a, b) for b in range(m)] for a in range(m)]
     for a in range(m):
         for b in range(a + 1, m):

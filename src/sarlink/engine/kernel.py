@@ -123,6 +123,7 @@ def _draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> No
 # Adjacency is kept as bitsets: row ``a`` of ``adj`` is ``W = ceil((N + 2) / 64)`` words whose
 # bit ``b`` says whether nodes ``a`` and ``b`` are linked; a breadth-first search then costs a
 # few word operations per node instead of a scan of a boolean matrix.
+_ZERO = np.uint64(0)
 _ONE = np.uint64(1)
 _DEBRUIJN = np.uint64(0x03F79D71B4CB0A89)
 _DEBRUIJN_INDEX = np.array(
@@ -154,34 +155,54 @@ def _link(adj: np.ndarray, a: int, b: int) -> None:
 
 @njit(cache=True)
 def _links(
-    px: np.ndarray, py: np.ndarray, n: int, shadowed: bool, thr2: np.ndarray, rc2: float,
-    h2: float, adj: np.ndarray,
+    px: np.ndarray, py: np.ndarray, pz: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
+    r2: float, near: np.ndarray,
 ) -> None:
-    """Links among drones, BS (node n) and target (node n+1); drone-ground links add h²."""
-    adj[:] = 0
-    for a in range(n):
-        for b in range(a + 1, n):
-            dx = px[a] - px[b]
-            dy = py[a] - py[b]
-            if dx * dx + dy * dy <= (thr2[a, b] if shadowed else rc2):
-                _link(adj, a, b)
-    for g in range(n, n + 2):
-        for a in range(g):
-            dx = px[a] - px[g]
-            dy = py[a] - py[g]
-            dd = dx * dx + dy * dy + (h2 if a < n else 0.0)
-            if dd <= (thr2[a, g] if shadowed else rc2):
-                _link(adj, a, g)
+    """Bitsets of the pairs within squared link range ``thr2[a, b]`` (``adj``) and, unless
+    ``near`` is empty, within squared sensing range ``r2`` (``near``).
+
+    Distances are 3-D: drones fly at ``pz = h``, the BS and the target sit on the ground.
+    Every row is computed whole, without branches, so that the loop vectorizes: this is
+    several times faster than testing each pair once and mirroring the bit.
+    """
+    m = px.shape[0]
+    with_near = near.shape[0] > 0
+    for a in range(m):
+        xa, ya, za = px[a], py[a], pz[a]
+        for w in range(adj.shape[1]):
+            lo = w * 64
+            row = np.uint64(0)
+            close = np.uint64(0)
+            for b in range(lo, min(m, lo + 64)):
+                dx = xa - px[b]
+                dy = ya - py[b]
+                dz = za - pz[b]
+                dd = dx * dx + dy * dy + dz * dz
+                bit = np.uint64(b - lo)
+                row |= (_ONE if dd <= thr2[a, b] else _ZERO) << bit
+                if with_near:
+                    close |= (_ONE if dd <= r2 else _ZERO) << bit
+            if w == a >> 6:  # a node is not its own neighbour
+                row &= ~(_ONE << np.uint64(a & 63))
+                close &= ~(_ONE << np.uint64(a & 63))
+            adj[a, w] = row
+            if with_near:
+                near[a, w] = close
+
+
+@njit(cache=True)
+def _lowest(bits: np.uint64) -> int:
+    """Index of the lowest set bit of a non-zero word."""
+    return _DEBRUIJN_INDEX[((bits & (~bits + _ONE)) * _DEBRUIJN) >> np.uint64(58)]
 
 
 @njit(cache=True)
 def _push_new(stack: np.ndarray, top: int, w: int, bits: np.uint64) -> int:
     """Push the node index of every set bit of word ``w``; return the new stack top."""
     while bits:
-        low = bits & (~bits + _ONE)
-        stack[top] = w * 64 + _DEBRUIJN_INDEX[(low * _DEBRUIJN) >> np.uint64(58)]
+        stack[top] = w * 64 + _lowest(bits)
         top += 1
-        bits ^= low
+        bits &= bits - _ONE
     return top
 
 
@@ -216,22 +237,22 @@ def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -
 
 @njit(cache=True)
 def _covb_force(
-    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, r: float,
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, near: np.ndarray,
+    flying: np.ndarray, r: float,
 ) -> tuple[float, float]:
-    """Unit direction of Eq. 6: own heading / r plus a 1/d push from each drone within r."""
-    n = hx.shape[0]
+    """Unit direction of Eq. 6: own heading / r plus a 1/d push from each flying drone within
+    r (``near & flying``), added in increasing drone order."""
     fx, fy = hx[i] / r, hy[i] / r
-    r2 = r * r
     neighbours = False
-    for j in range(n):
-        if j == i or mode[j] == LANDED:
-            continue
-        dx = px[i] - px[j]
-        dy = py[i] - py[j]
-        dd = dx * dx + dy * dy
-        if dd <= r2:
+    for w in range(flying.shape[0]):
+        bits = near[i, w] & flying[w]
+        while bits:
+            j = w * 64 + _lowest(bits)
+            bits &= bits - _ONE
             neighbours = True
+            dx = px[i] - px[j]
+            dy = py[i] - py[j]
+            dd = dx * dx + dy * dy
             if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
                 fx += dx / dd
                 fy += dy / dd
@@ -308,19 +329,44 @@ def _conb_force(
 @njit(cache=True)
 def _predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
-    p: Params, qx: np.ndarray, qy: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
+    pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
     out: np.ndarray, stack: np.ndarray,
 ) -> None:
-    """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range)."""
+    """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range).
+
+    A breadth-first search from the BS that computes a node's links only when it reaches
+    the node: the links of nodes cut off from the BS are never needed.
+    """
     n = hx.shape[0]
+    m = n + 2
     ahead = p.speed * p.ts_steps * p.dt
-    for j in range(n + 2):
+    for j in range(m):
         qx[j], qy[j] = px[j], py[j]
         if j < n and mode[j] != LANDED:
             qx[j] += ahead * hx[j]
             qy[j] += ahead * hy[j]
-    _links(qx, qy, n, False, thr2, p.rc * p.rc, p.altitude * p.altitude, adj)
-    _bs_component(adj, n, out, stack)
+    out[:] = 0
+    _add(out, n)
+    _add(out, n + 1)  # the target relays nothing
+    stack[0] = n
+    top = 1
+    while top > 0:
+        top -= 1
+        a = stack[top]
+        xa, ya, za = qx[a], qy[a], pz[a]
+        for w in range(out.shape[0]):
+            lo = w * 64
+            row = np.uint64(0)
+            for b in range(lo, min(m, lo + 64)):
+                dx = xa - qx[b]
+                dy = ya - qy[b]
+                dz = za - pz[b]
+                row |= (_ONE if dx * dx + dy * dy + dz * dz <= disc2[a, b] else _ZERO) << (
+                    np.uint64(b - lo))
+            new = row & ~out[w]
+            out[w] |= new
+            top = _push_new(stack, top, w, new)
+    out[(n + 1) >> 6] &= ~(_ONE << np.uint64((n + 1) & 63))
 
 
 @njit(cache=True)
@@ -401,7 +447,12 @@ def simulate_kernel(
 
     nw = (m + 63) // 64
     shadowed = p.sigma > 0.0
-    thr2 = np.full((m, m) if shadowed else (0, 0), p.rc * p.rc)
+    pz = np.zeros(m)
+    pz[:n] = p.altitude
+    disc2 = np.full((m, m), p.rc * p.rc)  # squared link ranges without fading
+    thr2 = disc2.copy() if shadowed else disc2
+    near = np.zeros((m, nw), dtype=np.uint64)  # pairs within sensing range, for CovB
+    flying = np.zeros(nw, dtype=np.uint64)  # drones not landed: they exert CovB's push
     adj = np.zeros((m, nw), dtype=np.uint64)
     routed = np.zeros(nw, dtype=np.uint64)
     flood = np.zeros(nw, dtype=np.uint64)
@@ -409,7 +460,6 @@ def simulate_kernel(
     # prediction buffers (shadow-free ranges: a drone cannot foresee fading)
     qx = np.empty(m)
     qy = np.empty(m)
-    qadj = np.zeros((m, nw), dtype=np.uint64)
     routed_next = np.zeros(nw, dtype=np.uint64)
     nhx = np.empty(n)
     nhy = np.empty(n)
@@ -431,9 +481,14 @@ def simulate_kernel(
     detector = -1
     immediate = False
     r2 = p.r * p.r
-    rc2 = p.rc * p.rc
-    h2 = p.altitude * p.altitude
+    covb = p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0)
     step = p.speed * p.dt
+    # no drone inside the area is farther from the BS than the farthest corner, so the
+    # return-home test cannot fire before that corner's flight home is due
+    home_max = 1.0
+    for cx in (0.0, p.size):
+        for cy in (0.0, p.size):
+            home_max = max(home_max, 1.0 + math.sqrt((p.bs_x - cx) ** 2 + (p.bs_y - cy) ** 2))
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
@@ -459,14 +514,30 @@ def simulate_kernel(
                         t_det = t
                         detector = i
             in_range[i] = now_in
-        _links(px, py, n, shadowed, thr2, rc2, h2, adj)
+        push = False
+        if covb:
+            flying[:] = 0
+            for i in range(n):
+                push |= (not on_route[i] and mode[i] == SEARCHING
+                         and k - last_change[i] >= p.ts_steps)
+                if mode[i] != LANDED:
+                    _add(flying, i)
+        _links(px, py, pz, thr2, adj, r2, near if push else near[:0])
         _bs_component(adj, n, routed, stack)
         if t_det >= 0.0:
+            # the BS's component is closed: a knower in it informs exactly that component,
+            # so only the knowers outside it need a search of their own
             flood[:] = 0
+            joined = False
             for i in range(n):
                 if knows[i]:
-                    _add(flood, i)
+                    if _has(routed, i):
+                        joined = True
+                    else:
+                        _add(flood, i)
             _component(adj, tg, flood, stack)
+            if joined:
+                flood |= routed
             for i in range(n):
                 knows[i] = _has(flood, i)
             if t_not < 0.0 and _has(flood, bs):
@@ -494,25 +565,27 @@ def simulate_kernel(
 
         # ---- decide: every drone from the state before anyone turns ----
         predicted = False
+        homing = (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt
         for i in range(n):
             nhx[i], nhy[i] = hx[i], hy[i]
             if on_route[i] or mode[i] != SEARCHING:
                 continue
-            hdx, hdy = p.bs_x - px[i], p.bs_y - py[i]
-            home = math.sqrt(hdx * hdx + hdy * hdy)
-            if (p.flight_time - t) - home / p.speed < 2.0 * p.dt:
-                mode[i] = RETURNING
-                nhx[i], nhy[i] = _unit(hdx, hdy, hx[i], hy[i])
-                continue
+            if homing:
+                hdx, hdy = p.bs_x - px[i], p.bs_y - py[i]
+                home = math.sqrt(hdx * hdx + hdy * hdy)
+                if (p.flight_time - t) - home / p.speed < 2.0 * p.dt:
+                    mode[i] = RETURNING
+                    nhx[i], nhy[i] = _unit(hdx, hdy, hx[i], hy[i])
+                    continue
             if k - last_change[i] >= p.ts_steps:
                 last_change[i] = k
                 cx, cy = hx[i], hy[i]
                 vx, vy = hx[i], hy[i]
-                if p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0):
-                    cx, cy = _covb_force(i, px, py, hx, hy, mode, p.r)
+                if covb:
+                    cx, cy = _covb_force(i, px, py, hx, hy, near, flying, p.r)
                 if p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0):
                     if not predicted:
-                        _predict_routes(px, py, hx, hy, mode, p, qx, qy, thr2, qadj,
+                        _predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2,
                                         routed_next, stack)
                         predicted = True
                     vx, vy = _conb_force(i, px, py, hx, hy, mode, adj, routed_next, p)
