@@ -55,3 +55,15 @@ def test_bad_input_is_one_clear_line_and_exit_code_2() -> None:
     assert out.exit_code == 2
     assert "team.drones" in out.output and "greater than or equal to 1" in out.output
     assert "Traceback" not in out.output
+
+
+def test_simulate_stopped_at_notification_reports_null_reachability() -> None:
+    flags = ["simulate", "--planner", "covb", "--drones", "10", "--rc", "2000", "--seed", "2"]
+    full = json.loads(runner.invoke(app, [*flags, "--json"]).stdout)
+    out = runner.invoke(app, [*flags, "--stop", "notified", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    assert data["t_notify"] == full["t_notify"] is not None
+    assert data["t_reachable"] is None and full["t_reachable"] > 0
+    summary = runner.invoke(app, [*flags, "--stop", "notified"])
+    assert "not recorded (the run stopped when notified)" in summary.stdout

@@ -31,6 +31,7 @@ def test_defaults_are_the_papers_table_3() -> None:
         ({"look": "sometimes"}, "sensing.look", "per-pass"),
         ({"speed": float("nan")}, "team.speed", "finite"),
         ({"sigma": 50.0}, "channel.sigma", "less than or equal to 30"),
+        ({"stop": "never"}, "timing.stop", "horizon"),
     ],
 )
 def test_bad_values_name_the_field_and_the_range(params: dict, field: str, allowed: str) -> None:

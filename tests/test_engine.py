@@ -132,3 +132,29 @@ def test_conb_keeps_more_drones_connected_than_covb() -> None:
                               for k in range(10)]))
 
     assert connected("conb") > connected("covb") + 0.2
+
+
+@pytest.mark.parametrize("planner", ["covb", "conb", "mtsp-conb"])
+def test_a_run_stopped_at_an_event_is_the_full_run_up_to_it(planner: str) -> None:
+    """``stop`` ends a run early without changing anything that happened before the stop."""
+    full_mission = Mission.build(drones=6, planner=planner, rc=1000.0, horizon=3000.0)
+    stopped = 0
+    for run in range(8):
+        full = simulate(full_mission, seed=5, run=run, trajectory=True)
+        for stop, at in (("detected", full.t_detect), ("notified", full.t_notify)):
+            early = simulate(full_mission.replace(stop=stop), seed=5, run=run, trajectory=True)
+            assert early.t_detect == full.t_detect
+            assert early.t_notify in ((full.t_notify,) if stop == "notified" or
+                                      full.t_notify == full.t_detect else (None,))
+            assert early.immediate == (full.immediate and early.t_notify is not None)
+            assert early.trajectory is not None and full.trajectory is not None
+            steps = len(early.trajectory.t)
+            assert steps == (len(full.trajectory.t) if at is None else int(at) + 1)
+            np.testing.assert_array_equal(early.trajectory.positions,
+                                          full.trajectory.positions[:steps])
+            recorded = early.checkpoints <= (3000.0 if at is None else at)
+            np.testing.assert_array_equal(early.reach_cum[recorded], full.reach_cum[recorded])
+            assert np.isnan(early.reach_cum[~recorded]).all()
+            assert np.isnan(early.connected_cum[~recorded]).all()
+            stopped += at is not None and at < 3000.0
+    assert stopped >= 8  # most runs did stop early: the claim is not vacuous

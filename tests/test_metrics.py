@@ -169,3 +169,21 @@ def test_success_never_decreases_in_td(notify: list[float], tds: list[float]) ->
     assert np.all((curve.P_s_lo <= curve.P_s) & (curve.P_s <= curve.P_s_hi))
     expected = [np.sum(np.asarray(notify) <= td) / len(notify) for td in sorted(tds)]
     assert curve.P_s.tolist() == pytest.approx(expected)
+
+
+def test_runs_stopped_at_notification_keep_the_event_measures_and_lose_reachability() -> None:
+    """An early stop changes no event time; records it no longer has read as NaN, not as 0."""
+    full = Mission.build(drones=5, rc=1000.0, horizon=1500.0)
+
+    def table(mission: Mission) -> pd.DataFrame:
+        df = pd.DataFrame([simulate(mission, seed=4, run=k).row() for k in range(12)])
+        for column in ("reach_cum", "connected_cum"):
+            df[column] = df[column].map(np.asarray)
+        return df.assign(horizon=1500.0, checkpoint=50.0)
+
+    tds = [500.0, 1500.0]
+    both = summarize(table(full), td=tds), summarize(table(full.replace(stop="notified")), td=tds)
+    for column in ("P_d", "P_s", "immediate", "mission_time", "search_share"):
+        np.testing.assert_array_equal(both[0][column], both[1][column])
+    assert 0 < both[1]["P_s"].iloc[-1] < 1  # some runs were cut short, some ran to the end
+    assert both[0]["reachability"].notna().all() and both[1]["reachability"].isna().all()

@@ -143,6 +143,12 @@ class Timing(Checked):
     checkpoint: float = Field(
         50.0, gt=0, description="spacing of the cumulative reachability records, s"
     )
+    stop: Literal["horizon", "detected", "notified"] = Field(
+        "horizon",
+        description="when a run ends: at the horizon, at the first detection or at the BS's "
+        "notification; an early stop is faster, and reachability and connectivity are then "
+        "recorded only up to it (NaN after)",
+    )
 
 
 class Mtsp(Checked):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -11,6 +12,10 @@ from rich.table import Table
 from sarlink.cli.common import build_mission, console, print_json, user_errors
 from sarlink.engine import simulate as run_simulation
 from sarlink.planners import get_planner
+
+
+def _finite_or_none(value: float) -> float | None:
+    return value if math.isfinite(value) else None
 
 
 def simulate(
@@ -27,6 +32,8 @@ def simulate(
     look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
     shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
     pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
+    stop: Annotated[str | None, typer.Option(help="end the run at: horizon, detected, notified")
+                    ] = None,
     config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
@@ -36,6 +43,7 @@ def simulate(
         mission = build_mission(
             config, planner=planner, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
             p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
+            stop=stop,
         )
         result = run_simulation(mission, seed=seed, run=run, trajectory=plot is not None)
     out: dict[str, Any] = {
@@ -50,8 +58,9 @@ def simulate(
         "t_notify": result.t_notify,
         "immediate": result.immediate,
         "detector": result.detector,
-        "t_reachable": result.t_reachable(),
-        "connected_fraction": result.connected_fraction(),
+        # null, not NaN, when the run stopped before the horizon: JSON has no NaN
+        "t_reachable": _finite_or_none(result.t_reachable()),
+        "connected_fraction": _finite_or_none(result.connected_fraction()),
     }
     if plot is not None:
         import matplotlib.pyplot as plt
@@ -77,9 +86,14 @@ def simulate(
     table.add_row("BS notified at", never if result.t_notify is None else f"{result.t_notify:g} s")
     table.add_row("mission success", "yes" if result.notified() else "no")
     table.add_row("immediate notification", "yes" if result.immediate else "no")
-    table.add_row("target reachable", f"{out['t_reachable']:g} s "
-                  f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
-    table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
+    if out["t_reachable"] is None:
+        unrecorded = f"[dim]not recorded (the run stopped when {mission.timing.stop})[/]"
+        table.add_row("target reachable", unrecorded)
+        table.add_row("drones connected to BS", unrecorded)
+    else:
+        table.add_row("target reachable", f"{out['t_reachable']:g} s "
+                      f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
+        table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
     console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")

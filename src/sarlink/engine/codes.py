@@ -27,3 +27,14 @@ class Look(IntEnum):
 
 
 LOOK_CODES = {"per-pass": Look.PER_PASS, "per-period": Look.PER_PERIOD}
+
+
+class Stop(IntEnum):
+    """When a run ends."""
+
+    HORIZON = 0
+    DETECTED = 1  # at the first detection
+    NOTIFIED = 2  # at the BS's notification
+
+
+STOP_CODES = {"horizon": Stop.HORIZON, "detected": Stop.DETECTED, "notified": Stop.NOTIFIED}

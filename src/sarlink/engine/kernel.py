@@ -15,7 +15,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from sarlink.engine.codes import Look, Mode, Rule
+from sarlink.engine.codes import Look, Mode, Rule, Stop
 
 SEARCHING = int(Mode.SEARCHING)
 RETURNING = int(Mode.RETURNING)
@@ -24,6 +24,8 @@ COVB = int(Rule.COVB)
 CONB = int(Rule.CONB)
 CONCOV = int(Rule.CONCOV)
 PER_PERIOD = int(Look.PER_PERIOD)
+STOP_DETECTED = int(Stop.DETECTED)
+STOP_NOTIFIED = int(Stop.NOTIFIED)
 
 _TINY = 1e-12
 _LN10 = math.log(10.0)
@@ -50,6 +52,7 @@ class Params(NamedTuple):
     ts_steps: int
     coherence_steps: int
     n_steps: int
+    stop: int
     record: bool
 
 
@@ -418,6 +421,8 @@ def simulate_kernel(
     ``cp_steps`` are the steps at which the cumulative records are taken.
     Returns ``(events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route,
     traj_mode)`` with ``events = [t_detect, t_notify, detector, immediate]`` (-1: never).
+    A run stopped early (``p.stop``) has NaN records after its last step and a trajectory
+    that ends there.
     """
     n = pos0.shape[0]
     m = n + 2
@@ -558,7 +563,8 @@ def simulate_kernel(
                 traj_route[k, i] = _has(routed, i)
             traj_knows[k] = knows
             traj_mode[k] = mode
-        if k == p.n_steps:
+        if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
+                p.stop == STOP_NOTIFIED and t_not >= 0.0):
             break
         acc_reach += p.dt if reachable else 0.0
         acc_conn += p.dt * connected / n
@@ -625,5 +631,9 @@ def simulate_kernel(
                 px[i] += step * hx[i]
                 py[i] += step * hy[i]
 
+    reach_cum[ci:] = np.nan  # checkpoints after an early stop
+    conn_cum[ci:] = np.nan
+    kk = min(kk, k + 1)
     events = np.array([t_det, t_not, float(detector), 1.0 if immediate else 0.0])
-    return events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route, traj_mode
+    return (events, reach_cum, conn_cum, traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
+            traj_route[:kk], traj_mode[:kk])

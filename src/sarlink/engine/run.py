@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine.codes import LOOK_CODES
+from sarlink.engine.codes import LOOK_CODES, STOP_CODES
 from sarlink.engine.kernel import Params, simulate_kernel
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.streams import run_streams
@@ -83,7 +83,7 @@ def prepare(mission: Mission) -> Prepared:
         rc=mission.channel.rc, sigma=mission.channel.sigma,
         pathloss_exponent=mission.channel.pathloss_exponent, altitude=mission.channel.altitude,
         dt=t.dt, ts_steps=mission.steps(t.ts), coherence_steps=mission.steps(mission.coherence),
-        n_steps=mission.n_steps, record=False,
+        n_steps=mission.n_steps, stop=int(STOP_CODES[t.stop]), record=False,
     )
     return Prepared(mission=mission, params=params, distributed=steering.distributed(n),
                     waypoints=waypoints, wp_start=wp_start, cp_steps=cp_steps)
