@@ -151,12 +151,6 @@ def _linked(adj: np.ndarray, a: int, b: int) -> bool:
 
 
 @njit(cache=True)
-def _link(adj: np.ndarray, a: int, b: int) -> None:
-    adj[a, b >> 6] |= _ONE << np.uint64(b & 63)
-    adj[b, a >> 6] |= _ONE << np.uint64(a & 63)
-
-
-@njit(cache=True)
 def _links(
     px: np.ndarray, py: np.ndarray, pz: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
     r2: float, near: np.ndarray,
