@@ -235,13 +235,19 @@ def fig2(curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
     return fig
 
 
+def _one_row(fig: Figure | None, main: pd.DataFrame, td: float, metric: Metric,
+             ranges: Sequence[float]) -> Figure:
+    """One metric at one ``td`` against N_m, a panel per communication range."""
+    fig, axes = _axes(fig, 1, len(ranges))
+    _versus_drones(axes[0], _at(main, td), metric, ranges)
+    _legend(fig)
+    return fig
+
+
 @_style()
 def fig3(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
     """Fig. 3: P_s against N_m at t_d = 2000 s, a panel per r_c."""
-    fig, axes = _axes(fig, 1, len(RANGES))
-    _versus_drones(axes[0], _at(main, TD_FIG3), P_S, RANGES)
-    _legend(fig)
-    return fig
+    return _one_row(fig, main, TD_FIG3, P_S, RANGES)
 
 
 @_style()
@@ -263,20 +269,14 @@ def fig4(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
 def fig5(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
     """Fig. 5: immediate notification against N_m at t_d = 4000 s, for r_c = 500 and 1000 m
     (the paper leaves out 2000 m, where every planner is near 1; the tables have it)."""
-    fig, axes = _axes(fig, 1, len(FIG5_RANGES))
-    _versus_drones(axes[0], _at(main, TD_LONG), IMMEDIATE, FIG5_RANGES)
-    _legend(fig)
-    return fig
+    return _one_row(fig, main, TD_LONG, IMMEDIATE, FIG5_RANGES)
 
 
 @_style()
 def fig6(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
     """Fig. 6: target reachability (share of t_d with a multihop route from the target to the
     BS) against N_m at t_d = 4000 s, a panel per r_c."""
-    fig, axes = _axes(fig, 1, len(RANGES))
-    _versus_drones(axes[0], _at(main, TD_LONG), REACHABILITY, RANGES)
-    _legend(fig)
-    return fig
+    return _one_row(fig, main, TD_LONG, REACHABILITY, RANGES)
 
 
 @_style()
