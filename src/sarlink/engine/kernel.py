@@ -56,7 +56,7 @@ class Params(NamedTuple):
     record: bool
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
     """``(x, y)`` scaled to length 1, or the fallback ``(fx, fy)`` if it vanishes."""
     n = math.sqrt(x * x + y * y)
@@ -65,12 +65,12 @@ def _unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
     return x / n, y / n
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _inside(x: float, y: float, size: float) -> bool:
     return 0.0 <= x <= size and 0.0 <= y <= size
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _boundary_turn(
     x: float, y: float, hx: float, hy: float, step: float, size: float, rng: np.random.Generator
 ) -> tuple[float, float, bool]:
@@ -106,7 +106,7 @@ def _boundary_turn(
             return hx, hy, True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> None:
     """Redraw the per-link squared range: ``10 n log10(d/rc) + S <= 0  <=>  d² <= rc² 10^(-S/5n)``.
 
@@ -135,22 +135,22 @@ _DEBRUIJN_INDEX = np.array(
      11, 46, 26, 40, 15, 34, 20, 31, 10, 25, 14, 19, 9, 13, 8, 7, 6], dtype=np.int64)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _has(bits: np.ndarray, a: int) -> bool:
     return (bits[a >> 6] >> np.uint64(a & 63)) & _ONE != 0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _add(bits: np.ndarray, a: int) -> None:
     bits[a >> 6] |= _ONE << np.uint64(a & 63)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _linked(adj: np.ndarray, a: int, b: int) -> bool:
     return (adj[a, b >> 6] >> np.uint64(b & 63)) & _ONE != 0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _links(
     px: np.ndarray, py: np.ndarray, pz: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
     r2: float, near: np.ndarray,
@@ -187,13 +187,13 @@ def _links(
                 near[a, w] = close
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _lowest(bits: np.uint64) -> int:
     """Index of the lowest set bit of a non-zero word."""
     return _DEBRUIJN_INDEX[((bits & (~bits + _ONE)) * _DEBRUIJN) >> np.uint64(58)]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _push_new(stack: np.ndarray, top: int, w: int, bits: np.uint64) -> int:
     """Push the node index of every set bit of word ``w``; return the new stack top."""
     while bits:
@@ -203,7 +203,7 @@ def _push_new(stack: np.ndarray, top: int, w: int, bits: np.uint64) -> int:
     return top
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _component(adj: np.ndarray, tg: int, out: np.ndarray, stack: np.ndarray) -> None:
     """Grow the node set ``out`` to everything linked to it, never routing through the target.
 
@@ -224,7 +224,7 @@ def _component(adj: np.ndarray, tg: int, out: np.ndarray, stack: np.ndarray) -> 
     out[tg >> 6] &= ~(_ONE << np.uint64(tg & 63))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -> None:
     """``out``: the nodes (drones and the BS, node n) with a multihop route to the BS."""
     out[:] = 0
@@ -232,7 +232,7 @@ def _bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -
     _component(adj, n + 1, out, stack)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _covb_force(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, near: np.ndarray,
     flying: np.ndarray, r: float,
@@ -253,20 +253,13 @@ def _covb_force(
             if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
                 fx += dx / dd
                 fy += dy / dd
-    if not neighbours:
-        return hx[i], hy[i]
-    return _unit(fx, fy, hx[i], hy[i])
+    ux, uy = hx[i], hy[i]
+    if neighbours:
+        ux, uy = _unit(fx, fy, ux, uy)
+    return ux, uy
 
 
-@njit(cache=True)
-def _velocity(j: int, n: int, mode: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-              speed: float) -> tuple[float, float]:
-    if j >= n or mode[j] == LANDED:
-        return 0.0, 0.0
-    return speed * hx[j], speed * hy[j]
-
-
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _conb_force(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
     mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params,
@@ -278,28 +271,43 @@ def _conb_force(
     route to the BS, if any) would be when the contact ends. A neighbour's route "without i"
     is its route in the predicted graph: ``i`` is not in the BS's predicted component here, so
     removing it changes nothing.
+
+    One exit only: inlined into the kernel, every extra ``return`` would keep Numba from
+    pruning the reference counting of the array arguments, an atomic operation each.
     """
     n = hx.shape[0]
-    if _has(routed_next, i):
-        return hx[i], hy[i]
+    ux, uy = hx[i], hy[i]
     neighbours = False
     candidates = False
-    for j in range(n + 1):
-        if _linked(adj, i, j):
-            neighbours = True
-            candidates |= _has(routed_next, j)
-    if not neighbours:
-        return hx[i], hy[i]
+    if not _has(routed_next, i):
+        for j in range(n + 1):
+            if _linked(adj, i, j):
+                neighbours = True
+                candidates |= _has(routed_next, j)
+    if neighbours:
+        ux, uy = _steer_to_contact(i, px, py, hx, hy, mode, adj, routed_next, candidates, p)
+    return ux, uy
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _steer_to_contact(
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, candidates: bool, p: Params,
+) -> tuple[float, float]:
+    """Eq. 9's turn towards the end of the longest contact (see :func:`_conb_force`)."""
+    n = hx.shape[0]
     rc2 = p.rc * p.rc
     vix, viy = p.speed * hx[i], p.speed * hy[i]
     best = -1
     best_rank = -1.0
     best_d2 = np.inf
-    best_tau = 0.0
+    best_tau = best_vx = best_vy = 0.0
     for j in range(n + 1):
         if not _linked(adj, i, j) or (candidates and not _has(routed_next, j)):
             continue
-        vjx, vjy = _velocity(j, n, mode, hx, hy, p.speed)
+        vjx = vjy = 0.0  # the BS and landed drones stand still
+        if j < n and mode[j] != LANDED:
+            vjx, vjy = p.speed * hx[j], p.speed * hy[j]
         relx, rely = px[j] - px[i], py[j] - py[i]
         rvx, rvy = vjx - vix, vjy - viy
         a = rvx * rvx + rvy * rvy
@@ -312,18 +320,17 @@ def _conb_force(
             tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
             rank = tau
         if rank > best_rank or (rank == best_rank and rel2 < best_d2):
-            best, best_rank, best_d2, best_tau = j, rank, rel2, tau
-    vjx, vjy = _velocity(best, n, mode, hx, hy, p.speed)
-    cx, cy = px[best] + vjx * best_tau, py[best] + vjy * best_tau
+            best, best_rank, best_d2, best_tau, best_vx, best_vy = j, rank, rel2, tau, vjx, vjy
+    cx, cy = px[best] + best_vx * best_tau, py[best] + best_vy * best_tau
     nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
     ux, uy = _unit(cx - nx, cy - ny, hx[i], hy[i])
     rx, ry = hx[i] + ux, hy[i] + uy
-    if math.sqrt(rx * rx + ry * ry) < 1e-9:  # flying straight away from the contact point
-        return ux, uy
-    return _unit(rx, ry, ux, uy)
+    if math.sqrt(rx * rx + ry * ry) >= 1e-9:  # else flying straight away from the contact
+        ux, uy = _unit(rx, ry, ux, uy)
+    return ux, uy
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
@@ -366,7 +373,7 @@ def _predict_routes(
     out[(n + 1) >> 6] &= ~(_ONE << np.uint64((n + 1) & 63))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always", error_model="numpy")
 def _fly_route(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
     mode: np.ndarray, wp: np.ndarray, wp_next: np.ndarray, wp_end: np.ndarray, step: float,
@@ -395,7 +402,7 @@ def _fly_route(
             return
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def simulate_kernel(
     p: Params,
     target_x: float,
