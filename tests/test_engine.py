@@ -9,7 +9,7 @@ import pytest
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
-from sarlink import Mission, Scenario, simulate
+from sarlink import Mission, Scenario, prepare, simulate
 from sarlink.engine.codes import Mode
 
 BS = (2000.0, 2000.0)
@@ -158,3 +158,34 @@ def test_a_run_stopped_at_an_event_is_the_full_run_up_to_it(planner: str) -> Non
             assert np.isnan(early.connected_cum[~recorded]).all()
             stopped += at is not None and at < 3000.0
     assert stopped >= 8  # most runs did stop early: the claim is not vacuous
+
+
+@pytest.mark.parametrize(("planner", "extra", "target"), [
+    ("mtsp", {}, None),
+    ("covb", {"horizon": 4500.0}, None),
+    # beside the BS, where the landed team keeps looking and, after a while, sees it
+    ("mtsp", {"p_miss": 0.9999, "look": "per-period", "horizon": 20000.0},
+     (BS[0] + 100.0, BS[1])),
+])
+def test_a_run_whose_team_has_landed_skips_to_the_horizon_with_the_same_records(
+        planner: str, extra: dict[str, object], target: tuple[float, float] | None) -> None:
+    """Once every drone has landed (and none still looks for the target) nothing changes
+    any more, and the engine jumps to the horizon; a recorded run never jumps, so the two
+    must agree on every event and record."""
+    mission = Mission.build(drones=8, planner=planner, rc=1000.0, iterations=200, **extra)
+    prepared = prepare(mission)
+    settled = late = 0
+    for run in range(6):
+        scenario = None if target is None else Scenario(target=target)
+        fast = prepared.run(3, run, scenario=scenario)
+        full = prepared.run(3, run, scenario=scenario, trajectory=True)
+        assert (fast.t_detect, fast.t_notify, fast.immediate) == (
+            full.t_detect, full.t_notify, full.immediate)
+        np.testing.assert_array_equal(fast.reach_cum, full.reach_cum)
+        np.testing.assert_array_equal(fast.connected_cum, full.connected_cum)
+        assert full.trajectory is not None
+        landed = (full.trajectory.mode == Mode.LANDED).all(axis=1)
+        settled += bool(landed[-2])
+        late += full.t_detect is not None and bool(landed[int(full.t_detect) - 1])
+    assert settled == 6  # every run landed before the horizon: the jump was taken
+    assert target is None or late >= 3  # the landed team did see the target

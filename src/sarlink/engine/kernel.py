@@ -373,6 +373,31 @@ def _predict_routes(
     out[(n + 1) >> 6] &= ~(_ONE << np.uint64((n + 1) & 63))
 
 
+@njit(cache=True, error_model="numpy")
+def _carry_records(start: int, n_steps: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarray,
+                   conn_cum: np.ndarray, acc_reach: float, acc_conn: float, d_reach: float,
+                   d_conn: float) -> None:
+    """Fill the checkpoints from step ``start`` on, as if every step added ``d_reach`` and
+    ``d_conn``: summed step by step, like the full loop, so that the sums are the same."""
+    for k in range(start, n_steps + 1):
+        while ci < cp_steps.shape[0] and cp_steps[ci] == k:
+            reach_cum[ci] = acc_reach
+            conn_cum[ci] = acc_conn
+            ci += 1
+        acc_reach += d_reach
+        acc_conn += d_conn
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _settled(mode: np.ndarray, in_range: np.ndarray, knows: np.ndarray, look: int) -> bool:
+    """Whether no later step can differ from this one: every drone has landed, and none in
+    sensing range still looks for the target (only per-period looks repeat in place)."""
+    for i in range(mode.shape[0]):
+        if mode[i] != LANDED or (look == PER_PERIOD and in_range[i] and not knows[i]):
+            return False
+    return True
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def _fly_route(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
@@ -489,6 +514,8 @@ def simulate_kernel(
     r2 = p.r * p.r
     covb = p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0)
     step = p.speed * p.dt
+    routes = wp.shape[0] > 0
+    may_settle = not (p.record or shadowed)  # a recorded run keeps every step
     # no drone inside the area is farther from the BS than the farthest corner, so the
     # return-home test cannot fire before that corner's flight home is due
     home_max = 1.0
@@ -569,10 +596,18 @@ def simulate_kernel(
             break
         acc_reach += p.dt if reachable else 0.0
         acc_conn += p.dt * connected / n
+        homing = (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt
+        # a drone lands at the end of its route or, homing, at the BS
+        if may_settle and (routes or homing) and _settled(mode, in_range, knows, p.look):
+            # a settled team observes this step again and again (the graph, the knowers and
+            # the links to the target are fixed): carry the sums to the horizon
+            _carry_records(k + 1, p.n_steps, cp_steps, ci, reach_cum, conn_cum, acc_reach,
+                           acc_conn, p.dt if reachable else 0.0, p.dt * connected / n)
+            ci = cp_steps.shape[0]
+            break
 
         # ---- decide: every drone from the state before anyone turns ----
         predicted = False
-        homing = (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt
         for i in range(n):
             nhx[i], nhy[i] = hx[i], hy[i]
             if on_route[i] or mode[i] != SEARCHING:
