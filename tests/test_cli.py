@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 
 from typer.testing import CliRunner
 
@@ -67,3 +69,19 @@ def test_simulate_stopped_at_notification_reports_null_reachability() -> None:
     assert data["t_reachable"] is None and full["t_reachable"] > 0
     summary = runner.invoke(app, [*flags, "--stop", "notified"])
     assert "not recorded (the run stopped when notified)" in summary.stdout
+
+
+def test_a_long_error_stays_one_line_when_stderr_is_not_a_terminal() -> None:
+    out = runner.invoke(app, ["simulate", "--planner", "mtsp", "--drones", "100"])
+    assert out.exit_code == 2
+    line = next(t for t in out.output.splitlines() if t.startswith("error:"))
+    assert len(line) > 80 and line.endswith("got 100")
+
+
+def test_a_single_simulation_does_not_load_pandas() -> None:
+    """``import sarlink`` and the CLI leave the sweep layer's pandas and pyarrow for later."""
+    code = ("import sys, sarlink, sarlink.cli\n"
+            "assert 'pandas' not in sys.modules and 'pyarrow' not in sys.modules\n"
+            "assert sarlink.Experiment.__module__ == 'sarlink.experiments'\n"
+            "assert 'pandas' in sys.modules\n")
+    subprocess.run([sys.executable, "-c", code], check=True)

@@ -5,13 +5,16 @@ from __future__ import annotations
 import itertools
 import json
 import math
+import time
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
+from filelock import FileLock
 
 import sarlink.mtsp as mtsp
 from sarlink import Mission
@@ -310,6 +313,23 @@ def test_a_cache_file_with_bad_tours_is_a_miss(cache: Cache) -> None:
     mtsp.clear_cache(disk=False)
     assert sorted(itertools.chain(*plan_for(BASE, 3).tours)) == list(range(64))
     assert cache.solves == 2
+
+
+def test_a_plan_being_solved_elsewhere_is_waited_for_and_not_solved_again(cache: Cache) -> None:
+    """Workers that need one plan at once solve it once: the others wait for the lock."""
+    solved = plan_for(BASE, 3)
+    (path,) = cache.dir.glob("*.json")
+    stored = path.read_text()
+    path.unlink()
+    mtsp.clear_cache(disk=False)
+    with ThreadPoolExecutor(1) as pool:
+        with FileLock(path.with_suffix(".lock")):  # another process is solving the plan ...
+            waiter = pool.submit(plan_for, BASE, 3)
+            time.sleep(0.5)
+            assert not waiter.done()
+            path.write_text(stored)  # ... and stores it, then lets go
+        assert waiter.result(timeout=60).tours == solved.tours
+    assert cache.solves == 1
 
 
 def test_an_unwritable_cache_warns_and_still_plans(tmp_path: Path,

@@ -1,11 +1,28 @@
 """sarlink: plan and simulate search-and-rescue drone teams that must notify their base station."""
 
+import importlib
+from typing import TYPE_CHECKING
+
 from sarlink.config import Area, Channel, ConfigError, Mission, Mtsp, Sensing, Team, Timing
 from sarlink.engine import Scenario, prepare, simulate
-from sarlink.experiments import Experiment, sweep
 from sarlink.planners import get_planner, planner_names
 from sarlink.result import RunResult, Trajectory
-from sarlink.storage import load
+
+if TYPE_CHECKING:
+    from sarlink.experiments import Experiment, sweep
+    from sarlink.storage import load
+
+_LAZY = {"Experiment": "sarlink.experiments", "sweep": "sarlink.experiments",
+         "load": "sarlink.storage"}
+"""Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
+that a single simulation starts without them."""
+
+
+def __getattr__(name: str) -> object:
+    if name in _LAZY:
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'sarlink' has no attribute {name!r}")
+
 
 __version__ = "0.1.0"
 

@@ -26,11 +26,14 @@ import os
 import tempfile
 import time
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
+from filelock import FileLock
 from numba import njit
 
 from sarlink.config import ConfigError
@@ -573,7 +576,9 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
 
     Plans are memoised in the process and stored as JSON in :func:`cache_dir`, under a hash
     of everything they depend on (:data:`CACHE_VERSION` included). Files are written
-    atomically; an unreadable file counts as missing and is rewritten.
+    atomically; an unreadable file counts as missing and is rewritten. A process about to
+    solve a plan holds a lock on it, so workers that need the same plan at once solve it
+    once and all use that one (OR-Tools' plans may differ from one solve to the next).
     """
     points, params = _checked_params(mission, salesmen)
     key = hashlib.sha256(json.dumps(params, sort_keys=True).encode()).hexdigest()[:32]
@@ -582,10 +587,30 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
     path = cache_dir() / f"{key}.json"
     plan = _read_plan(path, params, points)
     if plan is None:
-        plan = solve_for(mission, salesmen)
-        _write_plan(path, params, plan)
+        with _solve_lock(path):
+            plan = _read_plan(path, params, points)  # solved while this process waited?
+            if plan is None:
+                plan = solve_for(mission, salesmen)
+                _write_plan(path, params, plan)
     _MEMO[key] = plan
     return plan
+
+
+@contextmanager
+def _solve_lock(path: Path) -> Iterator[None]:
+    """Hold a lock on ``path``'s plan while it is solved, if the cache folder allows one;
+    with an unwritable cache every process solves on its own, as :func:`_write_plan` warns."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        lock = FileLock(path.with_suffix(".lock"))
+        lock.acquire()
+    except OSError:
+        yield
+        return
+    try:
+        yield
+    finally:
+        lock.release()
 
 
 def _checked_params(mission: Mission, salesmen: int) -> tuple[np.ndarray, dict[str, Any]]:

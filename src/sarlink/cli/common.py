@@ -14,7 +14,8 @@ from rich.console import Console
 from sarlink.config import ConfigError, Mission
 
 console = Console()
-err_console = Console(stderr=True)
+err_console = Console(stderr=True, soft_wrap=True)
+"""Errors stay one line each, also when stderr is a pipe or a log (rich would wrap at 80)."""
 
 
 @contextmanager

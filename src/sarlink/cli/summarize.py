@@ -5,16 +5,16 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
-import pandas as pd
 import typer
 from rich.table import Table
 
 from sarlink.cli.common import console, user_errors
 from sarlink.config import ConfigError
-from sarlink.metrics import summarize as summarize_runs
-from sarlink.storage import load, read_manifest
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def _probability(row: Any, name: str) -> str:
@@ -63,6 +63,9 @@ def summarize(
     json: Annotated[bool, typer.Option("--json", help="print JSON records")] = False,
 ) -> None:
     """P_s, P_d, immediate notification, mission time and reachability per grid point."""
+    from sarlink.metrics import summarize as summarize_runs  # pandas: only for this command
+    from sarlink.storage import load, read_manifest
+
     with user_errors():
         if csv and json:
             raise ConfigError("choose one of --csv and --json")

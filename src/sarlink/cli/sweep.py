@@ -8,8 +8,6 @@ from typing import Annotated
 import typer
 
 from sarlink.cli.common import console, user_errors
-from sarlink.experiments import Experiment
-from sarlink.experiments import sweep as run_sweep
 
 
 def sweep(
@@ -24,6 +22,9 @@ def sweep(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress, no summary")] = False,
 ) -> None:
     """Run every grid point of an experiment; an interrupted sweep resumes where it stopped."""
+    from sarlink.experiments import Experiment  # pandas and pyarrow: only for this command
+    from sarlink.experiments import sweep as run_sweep
+
     with user_errors():
         exp = Experiment.from_toml(experiment)
         runs = run_sweep(exp, out, workers=workers, scheduler=scheduler, dask_local=dask_local,

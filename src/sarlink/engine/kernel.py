@@ -427,7 +427,7 @@ def _fly_route(
             return
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", nogil=True)
 def simulate_kernel(
     p: Params,
     target_x: float,
@@ -448,7 +448,8 @@ def simulate_kernel(
     Returns ``(events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route,
     traj_mode)`` with ``events = [t_detect, t_notify, detector, immediate]`` (-1: never).
     A run stopped early (``p.stop``) has NaN records after its last step and a trajectory
-    that ends there.
+    that ends there. The kernel releases the GIL, so threads (a threaded Dask worker) run
+    runs in parallel.
     """
     n = pos0.shape[0]
     m = n + 2
