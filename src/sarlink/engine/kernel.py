@@ -260,74 +260,77 @@ def _covb_force(
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _conb_force(
-    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params,
-) -> tuple[float, float]:
-    """Unit direction of Eq. 9 (Algorithm 1, part 2).
-
-    Keep the heading if drone ``i`` is predicted to reach the BS at ``t + t_s``; else steer
-    towards where the neighbour with the longest contact (among those predicted to keep a
-    route to the BS, if any) would be when the contact ends. A neighbour's route "without i"
-    is its route in the predicted graph: ``i`` is not in the BS's predicted component here, so
-    removing it changes nothing.
-
-    One exit only: inlined into the kernel, every extra ``return`` would keep Numba from
-    pruning the reference counting of the array arguments, an atomic operation each.
-    """
-    n = hx.shape[0]
-    ux, uy = hx[i], hy[i]
-    neighbours = False
-    candidates = False
-    if not _has(routed_next, i):
-        for j in range(n + 1):
-            if _linked(adj, i, j):
-                neighbours = True
-                candidates |= _has(routed_next, j)
-    if neighbours:
-        ux, uy = _steer_to_contact(i, px, py, hx, hy, mode, adj, routed_next, candidates, p)
-    return ux, uy
+def _bit(word: np.uint64, a: int) -> bool:
+    """Whether node ``a``'s bit is set in ``word``, the bitset word that holds it."""
+    return (word >> np.uint64(a & 63)) & _ONE != 0
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _steer_to_contact(
-    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, candidates: bool, p: Params,
-) -> tuple[float, float]:
-    """Eq. 9's turn towards the end of the longest contact (see :func:`_conb_force`)."""
+def _conb_headings(
+    deciding: np.ndarray, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params, vx: np.ndarray,
+    vy: np.ndarray,
+) -> None:
+    """Unit direction of Eq. 9 (Algorithm 1, part 2) of every deciding drone, into ``vx, vy``.
+
+    A drone keeps its heading if it is predicted to reach the BS at ``t + t_s``; else it
+    steers towards where the neighbour with the longest contact (among those predicted to
+    keep a route to the BS, if any) would be when the contact ends. A neighbour's route
+    "without i" is its route in the predicted graph: ``i`` is not in the BS's predicted
+    component here, so removing it changes nothing.
+
+    The loop over drones is here, with no array-taking helper inside it, rather than a
+    helper called per drone: Numba counts the references of every array it hands to an
+    inlined helper, two atomic operations each, which cost a quarter of a ConB run.
+    """
     n = hx.shape[0]
     rc2 = p.rc * p.rc
-    vix, viy = p.speed * hx[i], p.speed * hy[i]
-    best = -1
-    best_rank = -1.0
-    best_d2 = np.inf
-    best_tau = best_vx = best_vy = 0.0
-    for j in range(n + 1):
-        if not _linked(adj, i, j) or (candidates and not _has(routed_next, j)):
+    for i in range(n):
+        if not deciding[i]:
             continue
-        vjx = vjy = 0.0  # the BS and landed drones stand still
-        if j < n and mode[j] != LANDED:
-            vjx, vjy = p.speed * hx[j], p.speed * hy[j]
-        relx, rely = px[j] - px[i], py[j] - py[i]
-        rvx, rvy = vjx - vix, vjy - viy
-        a = rvx * rvx + rvy * rvy
-        rel2 = relx * relx + rely * rely
-        if a < _TINY:  # equal velocities: the contact never ends
-            rank, tau = np.inf, p.flight_time
-        else:
-            b = 2.0 * (relx * rvx + rely * rvy)
-            disc = b * b - 4.0 * a * (rel2 - rc2)
-            tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
-            rank = tau
-        if rank > best_rank or (rank == best_rank and rel2 < best_d2):
-            best, best_rank, best_d2, best_tau, best_vx, best_vy = j, rank, rel2, tau, vjx, vjy
-    cx, cy = px[best] + best_vx * best_tau, py[best] + best_vy * best_tau
-    nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
-    ux, uy = _unit(cx - nx, cy - ny, hx[i], hy[i])
-    rx, ry = hx[i] + ux, hy[i] + uy
-    if math.sqrt(rx * rx + ry * ry) >= 1e-9:  # else flying straight away from the contact
-        ux, uy = _unit(rx, ry, ux, uy)
-    return ux, uy
+        vx[i], vy[i] = hx[i], hy[i]
+        if _bit(routed_next[i >> 6], i):
+            continue
+        neighbours = False
+        candidates = False
+        for j in range(n + 1):
+            if _bit(adj[i, j >> 6], j):
+                neighbours = True
+                candidates |= _bit(routed_next[j >> 6], j)
+        if not neighbours:
+            continue
+        vix, viy = p.speed * hx[i], p.speed * hy[i]
+        best = -1
+        best_rank = -1.0
+        best_d2 = np.inf
+        best_tau = best_vx = best_vy = 0.0
+        for j in range(n + 1):
+            if not _bit(adj[i, j >> 6], j) or (candidates and not _bit(routed_next[j >> 6], j)):
+                continue
+            vjx = vjy = 0.0  # the BS and landed drones stand still
+            if j < n and mode[j] != LANDED:
+                vjx, vjy = p.speed * hx[j], p.speed * hy[j]
+            relx, rely = px[j] - px[i], py[j] - py[i]
+            rvx, rvy = vjx - vix, vjy - viy
+            a = rvx * rvx + rvy * rvy
+            rel2 = relx * relx + rely * rely
+            if a < _TINY:  # equal velocities: the contact never ends
+                rank, tau = np.inf, p.flight_time
+            else:
+                b = 2.0 * (relx * rvx + rely * rvy)
+                disc = b * b - 4.0 * a * (rel2 - rc2)
+                tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
+                rank = tau
+            if rank > best_rank or (rank == best_rank and rel2 < best_d2):
+                best, best_rank, best_d2 = j, rank, rel2
+                best_tau, best_vx, best_vy = tau, vjx, vjy
+        cx, cy = px[best] + best_vx * best_tau, py[best] + best_vy * best_tau
+        nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
+        ux, uy = _unit(cx - nx, cy - ny, hx[i], hy[i])
+        rx, ry = hx[i] + ux, hy[i] + uy
+        if math.sqrt(rx * rx + ry * ry) >= 1e-9:  # else flying straight away from the contact
+            ux, uy = _unit(rx, ry, ux, uy)
+        vx[i], vy[i] = ux, uy
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -495,6 +498,10 @@ def simulate_kernel(
     routed_next = np.zeros(nw, dtype=np.uint64)
     nhx = np.empty(n)
     nhy = np.empty(n)
+    conb = p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0)
+    deciding = np.zeros(n, dtype=np.bool_)  # drones whose t_s is up this step
+    conb_x = np.zeros(n)  # ConB's direction of each deciding drone
+    conb_y = np.zeros(n)
 
     kk = p.n_steps + 1 if p.record else 0
     traj_pos = np.empty((kk, n, 2))
@@ -608,9 +615,10 @@ def simulate_kernel(
             break
 
         # ---- decide: every drone from the state before anyone turns ----
-        predicted = False
+        any_deciding = False
         for i in range(n):
             nhx[i], nhy[i] = hx[i], hy[i]
+            deciding[i] = False
             if on_route[i] or mode[i] != SEARCHING:
                 continue
             if homing:
@@ -622,16 +630,18 @@ def simulate_kernel(
                     continue
             if k - last_change[i] >= p.ts_steps:
                 last_change[i] = k
+                deciding[i] = any_deciding = True
+        if conb and any_deciding:
+            _predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2, routed_next, stack)
+            _conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, conb_x, conb_y)
+        for i in range(n):
+            if on_route[i] or mode[i] != SEARCHING:  # flying a route, home or landed
+                continue
+            if deciding[i]:
                 cx, cy = hx[i], hy[i]
-                vx, vy = hx[i], hy[i]
+                vx, vy = conb_x[i], conb_y[i]
                 if covb:
                     cx, cy = _covb_force(i, px, py, hx, hy, near, flying, p.r)
-                if p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0):
-                    if not predicted:
-                        _predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2,
-                                        routed_next, stack)
-                        predicted = True
-                    vx, vy = _conb_force(i, px, py, hx, hy, mode, adj, routed_next, p)
                 if p.rule == COVB:
                     nhx[i], nhy[i] = cx, cy
                 elif p.rule == CONB:
