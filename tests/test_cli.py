@@ -82,6 +82,6 @@ def test_a_single_simulation_does_not_load_pandas() -> None:
     """``import sarlink`` and the CLI leave the sweep layer's pandas and pyarrow for later."""
     code = ("import sys, sarlink, sarlink.cli\n"
             "assert 'pandas' not in sys.modules and 'pyarrow' not in sys.modules\n"
-            "assert sarlink.Experiment.__module__ == 'sarlink.experiments'\n"
+            "assert sarlink.sweep.__module__ == 'sarlink.execution'\n"
             "assert 'pandas' in sys.modules\n")
     subprocess.run([sys.executable, "-c", code], check=True)

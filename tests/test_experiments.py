@@ -22,7 +22,7 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError, Experiment, Mission, load, prepare, sweep
 from sarlink.cli import app
-from sarlink.experiments import _environment
+from sarlink.execution import _environment
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "sweep.toml"
 

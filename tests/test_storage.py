@@ -14,7 +14,7 @@ import pyarrow.parquet as pq
 import pytest
 
 from sarlink import ConfigError, Experiment, load, prepare
-from sarlink.experiments import _plan
+from sarlink.execution import _plan
 from sarlink.metrics import summarize
 from sarlink.storage import (
     MANIFEST,

@@ -3,17 +3,26 @@
 import importlib
 from typing import TYPE_CHECKING
 
-from sarlink.config import Area, Channel, ConfigError, Mission, Mtsp, Sensing, Team, Timing
+from sarlink.config import (
+    Area,
+    Channel,
+    ConfigError,
+    Experiment,
+    Mission,
+    Mtsp,
+    Sensing,
+    Team,
+    Timing,
+)
 from sarlink.engine import Scenario, prepare, simulate
 from sarlink.planners import get_planner, planner_names
 from sarlink.result import RunResult, Trajectory
 
 if TYPE_CHECKING:
-    from sarlink.experiments import Experiment, sweep
+    from sarlink.execution import sweep
     from sarlink.storage import load
 
-_LAZY = {"Experiment": "sarlink.experiments", "sweep": "sarlink.experiments",
-         "load": "sarlink.storage"}
+_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage"}
 """Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
 that a single simulation starts without them."""
 

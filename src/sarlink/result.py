@@ -24,6 +24,9 @@ class Trajectory:
     """(steps, N) whether the drone has a multihop route to the BS"""
     mode: np.ndarray
     """(steps, N) :class:`sarlink.engine.codes.Mode`"""
+    links: np.ndarray
+    """(steps, N + 2, N + 2) whether two nodes are linked (drones ``0 .. N-1``, the BS ``N``,
+    the target ``N + 1``), as the links were at that step (with shadowing, as drawn)"""
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from functools import cache
 from importlib.metadata import version
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any, Literal
+from typing import IO, Any, Literal
 
 import numpy as np
 import pandas as pd
@@ -38,13 +38,9 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 from pydantic import BaseModel
 
-from sarlink.config import ConfigError, Mission
+from sarlink.config import ConfigError, Experiment, Mission, mission_hash
 
-if TYPE_CHECKING:
-    from sarlink.experiments import Experiment
-
-__all__ = ["MANIFEST", "Point", "Store", "load", "mission_hash", "open_store", "read_manifest",
-           "run_table"]
+__all__ = ["MANIFEST", "Point", "Store", "load", "open_store", "read_manifest", "run_table"]
 
 MANIFEST = "experiment.json"
 FORMAT = 1
@@ -54,11 +50,6 @@ _FILE = re.compile(r"runs-(\d+)-(\d+)\.parquet")
 _POINT_KEY = b"sarlink.point"
 _SEED_KEY = b"sarlink.seed"
 _COLUMNS_KEY = b"sarlink.columns"
-
-
-def mission_hash(mission: Mission) -> str:
-    """A short content hash of every parameter of ``mission``: the name of its folder."""
-    return hashlib.sha256(mission.model_dump_json().encode()).hexdigest()[:16]
 
 
 def _file_name(runs: range) -> str:

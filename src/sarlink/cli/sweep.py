@@ -22,8 +22,8 @@ def sweep(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress, no summary")] = False,
 ) -> None:
     """Run every grid point of an experiment; an interrupted sweep resumes where it stopped."""
-    from sarlink.experiments import Experiment  # pandas and pyarrow: only for this command
-    from sarlink.experiments import sweep as run_sweep
+    from sarlink.config import Experiment
+    from sarlink.execution import sweep as run_sweep  # pandas and pyarrow: only for this command
 
     with user_errors():
         exp = Experiment.from_toml(experiment)

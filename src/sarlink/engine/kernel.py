@@ -458,7 +458,7 @@ def simulate_kernel(
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
     ``cp_steps`` are the steps at which the cumulative records are taken.
     Returns ``(events, reach_cum, conn_cum, traj_pos, traj_head, traj_knows, traj_route,
-    traj_mode)`` with ``events = [t_detect, t_notify, detector, immediate]`` (-1: never).
+    traj_mode, traj_links)`` with ``events = [t_detect, t_notify, detector, immediate]`` (-1: never).
     A run stopped early (``p.stop``) has NaN records after its last step and a trajectory
     that ends there. The kernel releases the GIL, so that several threads (a threaded Dask
     worker) can simulate at once.
@@ -521,6 +521,7 @@ def simulate_kernel(
     traj_knows = np.empty((kk, n), dtype=np.bool_)
     traj_route = np.empty((kk, n), dtype=np.bool_)
     traj_mode = np.empty((kk, n), dtype=np.int8)
+    traj_links = np.empty((kk, m, nw), dtype=np.uint64)
 
     reach_cum = np.empty(cp_steps.shape[0])
     conn_cum = np.empty(cp_steps.shape[0])
@@ -611,6 +612,7 @@ def simulate_kernel(
                 traj_route[k, i] = _has(routed, i)
             traj_knows[k] = knows
             traj_mode[k] = mode
+            traj_links[k] = adj
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
                 p.stop == STOP_NOTIFIED and t_not >= 0.0):
             break
@@ -695,4 +697,4 @@ def simulate_kernel(
     kk = min(kk, k + 1)
     events = np.array([t_det, t_not, float(detector), 1.0 if immediate else 0.0])
     return (events, reach_cum, conn_cum, traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
-            traj_route[:kk], traj_mode[:kk])
+            traj_route[:kk], traj_mode[:kk], traj_links[:kk])

@@ -44,12 +44,12 @@ class Prepared:
             takeoff_headings(scenario, self.distributed), self.waypoints, self.wp_start,
             self.cp_steps, streams.turn, streams.shadow, streams.look,
         )
-        events, reach_cum, conn_cum, pos, head, knows, route, mode = out
+        events, reach_cum, conn_cum, pos, head, knows, route, mode, links = out
         dt = self.mission.timing.dt
         traj = None
         if trajectory:
             traj = Trajectory(t=np.arange(pos.shape[0]) * dt, positions=pos, headings=head,
-                              knows=knows, bs_route=route, mode=mode)
+                              knows=knows, bs_route=route, mode=mode, links=unpack_links(links))
         t_det, t_not, detector, immediate = events
         return RunResult(
             seed=seed, run=run, target=(float(scenario.target[0]), float(scenario.target[1])),
@@ -59,6 +59,13 @@ class Prepared:
             checkpoints=self.cp_steps * dt, reach_cum=reach_cum, connected_cum=conn_cum,
             trajectory=traj,
         )
+
+
+def unpack_links(bits: np.ndarray) -> np.ndarray:
+    """``(steps, m, words)`` adjacency bitsets as a ``(steps, m, m)`` boolean array."""
+    m = bits.shape[1]
+    flat = np.unpackbits(bits.astype("<u8").view(np.uint8), axis=-1, bitorder="little")
+    return flat[..., :m].astype(bool)
 
 
 def prepare(mission: Mission) -> Prepared:

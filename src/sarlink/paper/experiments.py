@@ -17,8 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from sarlink.config import Mission
-from sarlink.experiments import Experiment
+from sarlink.config import Experiment, Mission
 from sarlink.metrics import success_curve, summarize
 
 __all__ = [

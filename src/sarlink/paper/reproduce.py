@@ -22,7 +22,7 @@ from pathlib import Path
 import pandas as pd
 
 from sarlink.config import ConfigError, Mission
-from sarlink.experiments import sweep
+from sarlink.execution import sweep
 from sarlink.paper.experiments import EXPERIMENTS, QUICK_RUNS, RUNS, plan_time_missions
 from sarlink.paper.figures import FIGURES, save
 from sarlink.paper.findings import Finding, check_all

@@ -1,0 +1,29 @@
+"""Configuration: validated, frozen models of a mission and of an experiment over missions."""
+
+from sarlink.config.base import Checked, ConfigError
+from sarlink.config.experiment import Experiment, mission_hash
+from sarlink.config.mission import (
+    Area,
+    Channel,
+    Mission,
+    Mtsp,
+    Sensing,
+    Team,
+    Timing,
+    param_groups,
+)
+
+__all__ = [
+    "Area",
+    "Channel",
+    "Checked",
+    "ConfigError",
+    "Experiment",
+    "Mission",
+    "Mtsp",
+    "Sensing",
+    "Team",
+    "Timing",
+    "mission_hash",
+    "param_groups",
+]

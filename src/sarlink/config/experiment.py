@@ -1,0 +1,91 @@
+"""Experiments: a base mission, a grid over its parameters, many runs per grid point.
+
+Common random numbers: every grid point uses the experiment's one seed and the run indices
+``0 .. runs-1``, and run ``k`` draws its target and take-off from ``(seed, k)`` alone. So run
+``k`` of every grid point searches for the same target, differences between points are not
+blurred by different targets, and no row depends on how the runs were cut into tasks or spread
+over workers. Running an experiment is :func:`sarlink.sweep` (:mod:`sarlink.execution`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+from typing import Any, Self
+
+from pydantic import Field, field_validator, model_validator
+
+from sarlink.config.base import Checked, ConfigError
+from sarlink.config.mission import Mission, param_groups
+
+__all__ = ["Experiment", "mission_hash"]
+
+
+def mission_hash(mission: Mission) -> str:
+    """A short content hash of every parameter of ``mission``: the name of its results folder."""
+    return hashlib.sha256(mission.model_dump_json().encode()).hexdigest()[:16]
+
+
+def _label(params: dict[str, Any]) -> str:
+    return ", ".join(f"{k}={v!r}" for k, v in params.items()) or "(the base mission)"
+
+
+class Experiment(Checked):
+    """A base mission, a grid of parameter values, and ``runs`` runs of every grid point.
+
+    ``grid`` maps flat mission parameters (``planner``, ``drones``, ``rc``, ``p_miss``, ...; see
+    :meth:`Mission.params`) to the values to try; the grid points are their cartesian product.
+    ``Experiment.from_toml`` reads ``name``, ``seed``, ``runs``, ``chunk``, ``[mission.*]``
+    (the tables of :class:`Mission`) and ``[grid]``.
+    """
+
+    name: str = Field(min_length=1, description="a name for people; not part of the identity")
+    seed: int = Field(ge=0, description="the one seed of every run of every grid point")
+    runs: int = Field(ge=1, description="runs per grid point, indices 0 .. runs-1")
+    chunk: int = Field(100, ge=1, description="runs per task; results do not depend on it")
+    mission: Mission = Field(default_factory=Mission, description="the base mission")
+    grid: dict[str, list[Any]] = Field(default_factory=dict,
+                                       description="flat parameter -> values to try")
+
+    @field_validator("grid")
+    @classmethod
+    def _known_parameters(cls, grid: dict[str, list[Any]]) -> dict[str, list[Any]]:
+        known = param_groups()
+        for name, values in grid.items():
+            if name not in known:
+                raise ValueError(f"unknown mission parameter {name!r}; "
+                                 f"known: {', '.join(sorted(known))}")
+            if not values:
+                raise ValueError(f"{name!r} lists no values")
+        return grid
+
+    @model_validator(mode="after")
+    def _valid_points(self) -> Self:
+        self.points()
+        return self
+
+    def points(self) -> list[tuple[dict[str, Any], Mission]]:
+        """Every grid point, in grid order (the last parameter varies fastest).
+
+        Each point is its grid values, as the mission holds them (``rc = 500`` reads ``500.0``),
+        and its mission. Raises ``ValueError`` naming the point if one is not a valid mission
+        or two points are the same mission.
+        """
+        names = list(self.grid)
+        points: list[tuple[dict[str, Any], Mission]] = []
+        seen: dict[str, dict[str, Any]] = {}
+        for values in itertools.product(*self.grid.values()):
+            raw = dict(zip(names, values, strict=True))
+            try:
+                mission = self.mission.replace(**raw)
+            except ConfigError as exc:
+                raise ValueError(f"grid point {_label(raw)}: {exc}") from None
+            flat = mission.params()
+            params = {name: flat[name] for name in names}
+            key = mission_hash(mission)
+            if key in seen:
+                raise ValueError(f"grid points {_label(seen[key])} and {_label(params)} are the "
+                                 "same mission")
+            seen[key] = params
+            points.append((params, mission))
+        return points
