@@ -41,6 +41,8 @@ def made_up() -> pd.DataFrame:
                                      "connected_cum"])
     for column in ("reach_cum", "connected_cum"):
         df[column] = [np.asarray(v, dtype=float) for v in df[column]]
+    df["checkpoints"] = [np.array([0.0, 50.0, 100.0])] * len(df)
+    df["immediate"] = df.t_notify == df.t_detect
     return df.assign(horizon=100.0, checkpoint=50.0)
 
 

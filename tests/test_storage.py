@@ -228,3 +228,21 @@ def test_renamed_column_is_caught_and_older_files_still_load(tmp_path: Path) -> 
     with pytest.warns(UserWarning, match="columns are not those it was written with"):
         df = load(tmp_path)
     assert len(df) == 24 - 6 and df.altitude.isna().sum() == 6
+
+
+def test_files_written_before_checkpoints_were_stored_read_the_same(tmp_path: Path) -> None:
+    """Older files lack the ``checkpoints`` column; loading gives the times the engine used,
+    and the summary is the same as from the files that store them."""
+    exp = experiment(mission={"team": {"drones": 3}, "timing": {"horizon": 420.0}})
+    fill(tmp_path, exp)
+    before = load(tmp_path)
+    for path in files(tmp_path):
+        table = pq.read_table(path)
+        meta = {**table.schema.metadata, b"sarlink.columns": json.dumps(
+            [n for n in table.column_names if n != "checkpoints"]).encode()}
+        pq.write_table(table.drop_columns(["checkpoints"]).replace_schema_metadata(meta), path)
+    after = load(tmp_path)
+    assert [list(v) for v in after.checkpoints] == [list(v) for v in before.checkpoints]
+    assert list(before.checkpoints.iloc[0])[-3:] == [350.0, 400.0, 420.0]
+    pd.testing.assert_frame_equal(summarize(after, td=[100, 420]),
+                                  summarize(before, td=[100, 420]))

@@ -2,13 +2,14 @@
 
 A run records when things happened (detection, notification, cumulative reachability), not
 whether they happened by one ``t_d``, so every ``t_d`` up to the horizon is read from the same
-runs (MODEL.md, Metrics). Probabilities come with 95% Wilson score intervals, means with
+runs (docs/model.md, Records and metrics). Probabilities come with 95% Wilson score intervals, means with
 standard errors. Everything is computed on whole columns: group ids from pandas, sums per
 group with ``np.bincount``.
 
 The input is a table of runs as :func:`sarlink.load` returns it. The columns used are
-``t_detect`` and ``t_notify`` (NaN when the event did not happen), and for reachability and
-connectivity ``reach_cum``, ``connected_cum``, ``horizon`` and ``checkpoint``.
+``t_detect``, ``t_notify`` (NaN when the event did not happen) and ``immediate``, and for
+reachability and connectivity ``reach_cum``, ``connected_cum`` and the ``checkpoints`` they
+were recorded at, as the engine stored them (``horizon`` and ``checkpoint`` group the runs).
 """
 
 from __future__ import annotations
@@ -67,20 +68,20 @@ def _groups(df: pd.DataFrame, by: Sequence[str] | None) -> tuple[np.ndarray, pd.
 def _cum_at(df: pd.DataFrame, column: str, td: np.ndarray) -> np.ndarray:
     """A cumulative record (``reach_cum``, ``connected_cum``) of every run read at its ``td``.
 
-    Records are sampled every ``checkpoint`` seconds and at the horizon
-    (:class:`sarlink.RunResult`) and interpolated linearly in between, as
-    :meth:`sarlink.RunResult.t_reachable` does.
+    Records are read at the ``checkpoints`` the engine stored with them and interpolated
+    linearly in between, as :meth:`sarlink.RunResult.t_reachable` does. Runs of one horizon
+    and checkpoint spacing share their checkpoints, so each such group is read in one pass.
     """
     out = np.empty(len(df))
     spacing = df[["horizon", "checkpoint"]].to_numpy(dtype=float)
     combos, which = np.unique(spacing, axis=0, return_inverse=True)
-    for c, (horizon, checkpoint) in enumerate(combos):  # one pass per sampling, not per run
+    for c in range(len(combos)):  # one pass per sampling, not per run
         rows = np.flatnonzero(which.ravel() == c)
         values = np.stack(df[column].to_numpy()[rows])
-        times = np.minimum(np.arange(values.shape[1]) * checkpoint, horizon)
-        if times[-1] != horizon or times[-2] == horizon:
-            raise ValueError(f"{column} has {values.shape[1]} values, which does not fit a "
-                             f"horizon of {horizon} s sampled every {checkpoint} s")
+        times = np.asarray(df["checkpoints"].iloc[rows[0]], dtype=float)
+        if times.shape != values.shape[1:]:
+            raise ValueError(f"{column} has {values.shape[1]} values for "
+                             f"{times.size} checkpoints")
         j = np.clip(np.searchsorted(times, td[rows], side="right") - 1, 0, len(times) - 2)
         frac = (td[rows] - times[j]) / (times[j + 1] - times[j])
         picked = values[np.arange(len(rows)), j]
@@ -134,7 +135,7 @@ def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np
     t_det = df["t_detect"].to_numpy(dtype=float)
     t_not = df["t_notify"].to_numpy(dtype=float)
     detected, notified = t_det <= td, t_not <= td
-    immediate = detected & (t_not == t_det)
+    immediate = detected & df["immediate"].to_numpy(dtype=bool)
     n, k_d, k_s, k_i = sums(np.ones(len(df))), sums(detected), sums(notified), sums(immediate)
     out: dict[str, np.ndarray] = {"td": np.bincount(gid, weights=td) / n, "runs": n.astype(int),
                                   "detected": k_d.astype(int), "notified": k_s.astype(int)}

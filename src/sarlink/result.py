@@ -91,6 +91,7 @@ class RunResult:
             "detector": -1 if self.detector is None else self.detector,
             "t_reachable": self.t_reachable(),
             "connected_fraction": self.connected_fraction(),
+            "checkpoints": self.checkpoints.tolist(),
             "reach_cum": self.reach_cum.tolist(),
             "connected_cum": self.connected_cum.tolist(),
         }

@@ -353,13 +353,24 @@ def load(out_dir: str | Path) -> pd.DataFrame:
     return _frame(stored, manifest["experiment"]["runs"])
 
 
+def _with_checkpoints(table: pa.Table) -> pa.Table:
+    """A table of one point with its ``checkpoints`` column, which files written before the
+    engine stored it lack: the grid the engine used for the point's timing."""
+    if "checkpoints" in table.column_names or table.num_rows == 0:
+        return table
+    timing = {name: table[name][0].as_py() for name in ("dt", "ts", "horizon", "checkpoint")}
+    mission = Mission.build(**timing)
+    times = [k * mission.timing.dt for k in mission.checkpoint_steps()]
+    return table.append_column("checkpoints", pa.array([times] * table.num_rows))
+
+
 def _frame(stored: Sequence[_Stored], runs: int) -> pd.DataFrame:
     """One DataFrame of runs ``0 .. runs-1`` from the valid files of each point, in order."""
     tables = []
     for index, files in enumerate(stored):
         for span, table in files:
             if span.start < runs:
-                part = table.slice(0, runs - span.start)
+                part = _with_checkpoints(table.slice(0, runs - span.start))
                 tables.append(part.add_column(0, "point", pa.repeat(pa.scalar(index),
                                                                     part.num_rows)))
     if not tables:

@@ -200,6 +200,12 @@ class Mission(Checked):
         """Number of time increments in the horizon."""
         return round(self.timing.horizon / self.timing.dt)
 
+    def checkpoint_steps(self) -> list[int]:
+        """The steps of the cumulative records: every ``checkpoint`` and the horizon."""
+        every = self.steps(self.timing.checkpoint)
+        steps = list(range(0, self.n_steps + 1, every))
+        return steps if steps[-1] == self.n_steps else [*steps, self.n_steps]
+
     def steps(self, seconds: float) -> int:
         """A duration in whole time increments (durations are validated as multiples of dt)."""
         return max(1, round(seconds / self.timing.dt))

@@ -25,7 +25,7 @@ from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.params import LANDED, SEARCHING, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "b192bac7a6b1ec57"
+SOURCE_DIGEST = "25acc9e95d578ce4"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
@@ -72,9 +72,10 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
     stack = np.empty(m, dtype=np.int64)
     qx, qy = np.full(mp, FAR), np.full(mp, FAR)  # ConB's predicted positions
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
-    cov_x, cov_y, con_x, con_y = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    con_x, con_y = np.zeros(n), np.zeros(n)  # ConB's directions of the deciding drones
     deciding = np.zeros(n, dtype=np.bool_)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw)
+    traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
     acc_reach = acc_conn = 0.0
     ci = 0
@@ -107,7 +108,8 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
             t_not = t
         reachable, connected = graph.reachability(adj, routed, n)
         if p.record:
-            records.record_step(track, k, px, py, hx, hy, routed, knows, mode, adj)
+            records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
+                                traj_knows, traj_route, traj_mode, traj_links)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
                 p.stop == STOP_NOTIFIED and t_not >= 0.0):
             break
@@ -132,10 +134,8 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
                                      stack)
                 rules.conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, con_x,
                                     con_y)
-            if covb:
-                rules.covb_headings(deciding, px, py, hx, hy, near, flying, p.r, cov_x, cov_y)
-            rules.blend(deciding, p, hx, hy, cov_x, cov_y, con_x, con_y, nhx, nhy)
-        motion.keep_inside(k, p, px, py, mode, on_route, last_change, nhx, nhy, rng_turn)
+        rules.steer(k, p, deciding, px, py, hx, hy, mode, on_route, last_change, near, flying,
+                    con_x, con_y, nhx, nhy, rng_turn)
         hx[:] = nhx
         hy[:] = nhy
         # ---- move ----
@@ -143,6 +143,8 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
 
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan
+    kk = min(traj_mode.shape[0], k + 1)  # a run stopped early records fewer steps
     return RunRecord(t_det, t_not, detector, t_not >= 0.0 and t_not == t_det,
                      cp_steps * p.dt, reach_cum, conn_cum,
-                     records.cut_track(track, min(track.knows.shape[0], k + 1)))
+                     records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
+                                   traj_route[:kk], traj_mode[:kk], traj_links[:kk]))

@@ -23,7 +23,7 @@ def farthest_home(p: Params) -> float:
     return home_max
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def schedule(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray,
              hy: np.ndarray, mode: np.ndarray, on_route: np.ndarray, last_change: np.ndarray,
              deciding: np.ndarray, nhx: np.ndarray, nhy: np.ndarray) -> bool:
@@ -91,21 +91,6 @@ def boundary_turn(
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def keep_inside(k: int, p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
-                on_route: np.ndarray, last_change: np.ndarray, nhx: np.ndarray, nhy: np.ndarray,
-                rng: np.random.Generator) -> None:
-    """Apply the boundary rule to the new heading of every searching distributed drone; a
-    boundary turn counts as a direction change."""
-    step = p.speed * p.dt
-    for i in range(nhx.shape[0]):
-        if on_route[i] or mode[i] != SEARCHING:  # flying a route, home or landed
-            continue
-        nhx[i], nhy[i], turned = boundary_turn(px[i], py[i], nhx[i], nhy[i], step, p.size, rng)
-        if turned:
-            last_change[i] = k
-
-
-@njit(cache=True, inline="always", error_model="numpy")
 def fly_route(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
     mode: np.ndarray, wp: np.ndarray, wp_next: np.ndarray, wp_end: np.ndarray, step: float,
@@ -134,7 +119,7 @@ def fly_route(
             return
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
          mode: np.ndarray, on_route: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
          wp_end: np.ndarray) -> None:

@@ -58,25 +58,23 @@ def new_track(steps: int, n: int, nw: int) -> Track:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def record_step(track: Track, k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray,
-                hy: np.ndarray, routed: np.ndarray, knows: np.ndarray, mode: np.ndarray,
-                adj: np.ndarray) -> None:
-    """Store the observed state of step ``k``."""
+def record_step(k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+                routed: np.ndarray, knows: np.ndarray, mode: np.ndarray, adj: np.ndarray,
+                positions: np.ndarray, headings: np.ndarray, track_knows: np.ndarray,
+                bs_route: np.ndarray, track_mode: np.ndarray, links: np.ndarray) -> None:
+    """Store the observed state of step ``k`` in the arrays of a :class:`Track`.
+
+    The kernel hands the track's arrays one by one, not the tuple: a tuple of arrays passed
+    in the step loop costs a reference count of each of its arrays at every step.
+    """
     for i in range(knows.shape[0]):
-        track.positions[k, i, 0] = px[i]
-        track.positions[k, i, 1] = py[i]
-        track.headings[k, i] = math.atan2(hy[i], hx[i])
-        track.bs_route[k, i] = has(routed, i)
-    track.knows[k] = knows
-    track.mode[k] = mode
-    track.links[k] = adj
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def cut_track(track: Track, steps: int) -> Track:
-    """The first ``steps`` recorded steps (a run stopped early records fewer)."""
-    return Track(track.positions[:steps], track.headings[:steps], track.knows[:steps],
-                 track.bs_route[:steps], track.mode[:steps], track.links[:steps])
+        positions[k, i, 0] = px[i]
+        positions[k, i, 1] = py[i]
+        headings[k, i] = math.atan2(hy[i], hx[i])
+        bs_route[k, i] = has(routed, i)
+    track_knows[k] = knows
+    track_mode[k] = mode
+    links[k] = adj
 
 
 @njit(cache=True, inline="always", error_model="numpy")

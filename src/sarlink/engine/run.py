@@ -39,10 +39,7 @@ class Prepared:
         waypoints = np.concatenate([np.asarray(r, dtype=float).reshape(-1, 2) for r in routes])
         bs_x, bs_y = mission.area.bs_xy
         t = mission.timing
-        cp = mission.steps(t.checkpoint)
-        cp_steps = np.arange(0, mission.n_steps + 1, cp, dtype=np.int64)
-        if cp_steps[-1] != mission.n_steps:
-            cp_steps = np.append(cp_steps, mission.n_steps)
+        cp_steps = np.array(mission.checkpoint_steps(), dtype=np.int64)
         params = Params(
             size=mission.area.size, bs_x=bs_x, bs_y=bs_y, speed=mission.team.speed,
             rule=int(steering.rule), alpha=float(steering.alpha),

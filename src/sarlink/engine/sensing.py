@@ -8,7 +8,7 @@ from numba import njit
 from sarlink.engine.params import PER_PERIOD, Params
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def sense(px: np.ndarray, py: np.ndarray, k: int, p: Params, in_range: np.ndarray,
           pass_start: np.ndarray, knows: np.ndarray, rng: np.random.Generator) -> int:
     """Let every drone with the target in range look; return the first to detect, or -1.
