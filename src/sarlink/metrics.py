@@ -2,8 +2,8 @@
 
 A run records when things happened (detection, notification, cumulative reachability), not
 whether they happened by one ``t_d``, so every ``t_d`` up to the horizon is read from the same
-runs (docs/model.md, Records and metrics). Probabilities come with 95% Wilson score intervals, means with
-standard errors. Everything is computed on whole columns: group ids from pandas, sums per
+runs (docs/model.md, Records and metrics). Probabilities come with 95% Wilson score intervals,
+means with standard errors. Everything is computed on whole columns: group ids from pandas, sums per
 group with ``np.bincount``.
 
 The input is a table of runs as :func:`sarlink.load` returns it. The columns used are

@@ -127,13 +127,12 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
             break
 
         # ---- decide: every drone from the state before anyone turns ----
-        if motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route, last_change, deciding,
-                           nhx, nhy):
-            if conb:
-                rules.predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2, routed_next,
-                                     stack)
-                rules.conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, con_x,
-                                    con_y)
+        any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
+                                       last_change, deciding, nhx, nhy)
+        if conb and any_deciding:
+            rules.predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2, routed_next, stack)
+            rules.conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, con_x,
+                                con_y)
         rules.steer(k, p, deciding, px, py, hx, hy, mode, on_route, last_change, near, flying,
                     con_x, con_y, nhx, nhy, rng_turn)
         hx[:] = nhx
