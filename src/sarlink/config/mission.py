@@ -18,7 +18,7 @@ __all__ = [
     "Area",
     "Channel",
     "Mission",
-    "Mtsp",
+    "MtspSettings",
     "Sensing",
     "Team",
     "Timing",
@@ -111,8 +111,12 @@ class Timing(Checked):
     )
 
 
-class Mtsp(Checked):
-    """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings."""
+class MtspSettings(Checked):
+    """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings.
+
+    The ``[mtsp]`` table of a mission file; the planner that flies the plans is
+    :class:`sarlink.planners.mtsp.Mtsp`.
+    """
 
     solver: Literal["ga", "ortools"] = Field(
         "ga", description="ga: the paper's genetic algorithm; ortools: OR-Tools routing"
@@ -147,7 +151,7 @@ class Mission(Checked):
     sensing: Sensing = Field(default_factory=Sensing)
     channel: Channel = Field(default_factory=Channel)
     timing: Timing = Field(default_factory=Timing)
-    mtsp: Mtsp = Field(default_factory=Mtsp)
+    mtsp: MtspSettings = Field(default_factory=MtspSettings)
 
     @model_validator(mode="after")
     def _consistent(self) -> Self:
@@ -215,6 +219,6 @@ def param_groups() -> dict[str, str]:
     """Flat parameter name -> the group that holds it."""
     models: dict[str, type[BaseModel]] = {
         "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "mtsp": Mtsp,
+        "mtsp": MtspSettings,
     }
     return {field: group for group, model in models.items() for field in model.model_fields}
