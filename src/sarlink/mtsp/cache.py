@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import os
 import tempfile
 import warnings
@@ -30,6 +31,9 @@ if TYPE_CHECKING:
     from sarlink.config import Mission
 
 __all__ = ["CACHE_VERSION", "cache_dir", "clear_cache", "plan_for", "solve_for"]
+
+MAX_CELLS = 10_000
+"""Most cells of a plan: the solvers hold a dense distance matrix (800 MB at this size)."""
 
 CACHE_VERSION = 1
 """Bumped whenever a solver or the file format changes, so that old plans are not reused."""
@@ -140,6 +144,11 @@ def _solve_lock(path: Path) -> Iterator[None]:
 
 def _checked_params(mission: Mission, salesmen: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The cells and the plan parameters, or a :class:`ConfigError` if no plan exists."""
+    side = math.ceil(mission.area.size / mission.sensing.r - 1e-9)
+    if side * side > MAX_CELLS:
+        raise ConfigError(f"an mTSP plan has at most {MAX_CELLS:,} cells: area.size / sensing.r "
+                          f"must be at most {math.isqrt(MAX_CELLS)}, got {mission.area.size:g} / "
+                          f"{mission.sensing.r:g}")
     points = grid_cells(mission.area.size, mission.sensing.r)
     cells, min_cells = len(points), mission.mtsp.min_cells
     if not 1 <= salesmen <= cells:
