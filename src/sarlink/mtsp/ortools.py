@@ -6,6 +6,9 @@ directly (PyVRP minimises total distance only and has no lower bound on route si
 
 from __future__ import annotations
 
+import time
+from typing import Any
+
 import numpy as np
 
 from sarlink.mtsp.plan import Objective, distance_matrix
@@ -19,11 +22,11 @@ grid, 2 s already gives nearly the same plans (docs/mtsp.md), and a plan is made
 _ORTOOLS_TICKS = 1_000_000
 """OR-Tools needs integer arc costs: the longest arc is scaled to this many ticks."""
 
-_ORTOOLS_ROUNDS = 4
-"""Min-max: rounds of search against a lowered bound on every tour."""
-
 _ORTOOLS_EXCESS_COST = 1000
 """Min-max: cost of one tick of a tour beyond the bound, against one per tick of distance."""
+
+_PROBE_SECONDS = 0.5
+"""Min-max: the longest search for a plan under one route-length limit, s."""
 
 
 def solve_ortools(
@@ -32,13 +35,18 @@ def solve_ortools(
 ) -> tuple[tuple[int, ...], ...]:
     """OR-Tools routing from an angular sweep around the depot cut into equal parts.
 
-    ``minsum`` is one guided local search on the arc costs. ``minmax`` is harder for OR-Tools:
-    a global span cost (the longest tour) is flat wherever several tours are about as long,
-    so local search stalls. It therefore runs in two halves: a guided local search with a span
-    cost of weight 100 (OR-Tools' customary recipe, which does well for few drones), then
-    rounds that penalise every tour's excess over a target below the best longest tour so far
-    (a soft upper bound: shortening any long tour pays, which does well for many drones),
-    lowering the target after each success. The plan with the shortest longest tour wins.
+    ``minsum`` is one guided local search on the arc costs. ``minmax`` is harder: a global span
+    cost (the longest tour) is flat wherever several tours are about as long, so local search
+    stalls, and no single recipe does well for every team size (docs/mtsp.md). It runs three
+    stages of a third of the time each, every one starting from the best plan so far:
+
+    1. guided local search with a span cost of weight 100 (OR-Tools' customary recipe);
+    2. a bisection between the lower bound (the round trip to the farthest point) and the best
+       longest tour, with a *soft* bound on every tour: each tick of excess costs
+       :data:`_ORTOOLS_EXCESS_COST`, so shortening any long tour pays;
+    3. a descent on a *hard* route-length limit below the best longest tour: points may be left
+       out at a high price, so the search starts from the best plan with its tours cut to the
+       limit and succeeds when it puts every point back.
     """
     dist = distance_matrix(points, depot)
     scale = _ORTOOLS_TICKS / dist.max() if dist.max() > 0 else 1.0
@@ -49,19 +57,48 @@ def solve_ortools(
     if objective == "minsum":
         routes = _ortools_search(ticks, salesmen, min_cells, routes, time_limit)
     else:
-        routes = _ortools_search(ticks, salesmen, min_cells, routes, time_limit / 2,
-                                 span_weight=100)
-        longest = _longest_ticks(ticks, routes)
-        cut = 0.1
-        for _ in range(_ORTOOLS_ROUNDS):
-            found = _ortools_search(ticks, salesmen, min_cells, routes,
-                                    time_limit / (2 * _ORTOOLS_ROUNDS),
-                                    bound=round(longest * (1 - cut)))
-            if _longest_ticks(ticks, found) < longest:
-                routes, longest = found, _longest_ticks(ticks, found)
-            else:
-                cut /= 2
+        stage = time_limit / 3
+        routes = _ortools_search(ticks, salesmen, min_cells, routes, stage, span_weight=100)
+        routes = _bisect_soft_bound(ticks, salesmen, min_cells, routes, stage)
+        routes = _descend_hard_limit(ticks, salesmen, min_cells, routes, stage)
     return tuple(tuple(node - 1 for node in route) for route in routes)
+
+
+def _bisect_soft_bound(ticks: np.ndarray, salesmen: int, min_cells: int,
+                       routes: list[list[int]], seconds: float) -> list[list[int]]:
+    """Search under a soft bound halfway between the floor and the best longest tour; a plan
+    within the bound lowers the best, a failure raises the floor (heuristically)."""
+    deadline = time.perf_counter() + seconds
+    floor = 2 * int(ticks[0].max())
+    best = _longest_ticks(ticks, routes)
+    while best > floor and (left := deadline - time.perf_counter()) > 0.01:
+        bound = (floor + best) // 2
+        found = _ortools_search(ticks, salesmen, min_cells, routes, min(_PROBE_SECONDS, left),
+                                bound=bound)
+        longest = _longest_ticks(ticks, found)
+        if longest < best:
+            routes, best = found, longest
+        if longest > bound:
+            floor = bound + 1
+    return routes
+
+
+def _descend_hard_limit(ticks: np.ndarray, salesmen: int, min_cells: int,
+                        routes: list[list[int]], seconds: float) -> list[list[int]]:
+    """Plans under a hard limit a step below the best longest tour; the step halves on each
+    failure, and stays while the searches succeed."""
+    deadline = time.perf_counter() + seconds
+    floor = 2 * int(ticks[0].max())
+    best, step = _longest_ticks(ticks, routes), 0.05
+    while best > floor and step > 1e-4 and (left := deadline - time.perf_counter()) > 0.01:
+        limit = max(floor, round(best * (1 - step)))
+        found = _ortools_limited(ticks, salesmen, min_cells, routes, min(_PROBE_SECONDS, left),
+                                 limit)
+        if found is not None:
+            routes, best = found, _longest_ticks(ticks, found)
+        else:
+            step /= 2
+    return routes
 
 
 def _longest_ticks(ticks: np.ndarray, routes: list[list[int]]) -> int:
@@ -108,6 +145,11 @@ def _ortools_search(
     solution = routing.SolveFromAssignmentWithParameters(start, params)
     if solution is None:
         raise RuntimeError("OR-Tools found no solution from a feasible start; please report it")
+    return _routes_of(routing, manager, solution, salesmen)
+
+
+def _routes_of(routing: Any, manager: Any, solution: Any, salesmen: int) -> list[list[int]]:
+    """The node lists (depot excluded) of a solution, one per vehicle."""
     found = []
     for v in range(salesmen):
         route = []
@@ -117,3 +159,57 @@ def _ortools_search(
             index = solution.Value(routing.NextVar(index))
         found.append(route)
     return found
+
+
+def _ortools_limited(ticks: np.ndarray, salesmen: int, min_cells: int, routes: list[list[int]],
+                     seconds: float, limit: int) -> list[list[int]] | None:
+    """A plan whose every tour is at most ``limit`` ticks, or None if none was found.
+
+    Every point may be left out at a price above any route's length, and a tour short of
+    ``min_cells`` points pays the same per missing point; the search starts from ``routes``
+    with each tour cut where it would exceed the limit and stops at the first plan that
+    visits every point with ``min_cells`` per tour.
+    """
+    from ortools.constraint_solver import pywrapcp, routing_enums_pb2
+
+    nodes = len(ticks)
+    manager = pywrapcp.RoutingIndexManager(nodes, salesmen, 0)
+    routing = pywrapcp.RoutingModel(manager)
+    arc = routing.RegisterTransitMatrix(ticks.tolist())
+    routing.SetArcCostEvaluatorOfAllVehicles(arc)
+    routing.AddDimension(arc, 0, limit, True, "distance")
+    price = int(ticks.sum()) + 1
+    for node in range(1, nodes):
+        routing.AddDisjunction([manager.NodeToIndex(node)], price)
+    count = routing.RegisterUnaryTransitVector([0] + [1] * (nodes - 1))
+    routing.AddDimension(count, 0, nodes, True, "count")
+    cells = routing.GetDimensionOrDie("count")
+    for v in range(salesmen):
+        cells.SetCumulVarSoftLowerBound(routing.End(v), min_cells, price)
+
+    params = pywrapcp.DefaultRoutingSearchParameters()
+    params.local_search_metaheuristic = (
+        routing_enums_pb2.LocalSearchMetaheuristic.GUIDED_LOCAL_SEARCH)
+    params.time_limit.FromMilliseconds(max(1, round(seconds * 1000)))
+    routing.CloseModelWithParameters(params)
+
+    def stop_when_complete() -> None:
+        if routing.CostVar().Max() < price:  # nothing left out, no tour short of points
+            routing.solver().FinishCurrentSearch()
+
+    routing.AddAtSolutionCallback(stop_when_complete)
+    start = routing.ReadAssignmentFromRoutes([_cut(ticks, r, limit) for r in routes], True)
+    solution = routing.SolveFromAssignmentWithParameters(start, params)
+    if solution is None:
+        return None
+    found = _routes_of(routing, manager, solution, salesmen)
+    complete = sum(map(len, found)) == nodes - 1 and min(map(len, found)) >= min_cells
+    return found if complete else None
+
+
+def _cut(ticks: np.ndarray, route: list[int], limit: int) -> list[int]:
+    """The longest prefix of ``route`` whose tour (back to the depot) is within ``limit``."""
+    for end in range(len(route), 0, -1):
+        if _longest_ticks(ticks, [route[:end]]) <= limit:
+            return route[:end]
+    return []
