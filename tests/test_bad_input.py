@@ -201,7 +201,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     # -- reproduce and the app ---------------------------------------------------------------
     (["reproduce", "--figures", "9", "--out", "{d}/r"], ["figures must be among 1, 2"]),
     (["reproduce", "--figures", "one", "--out", "{d}/r"], ["--figures", "like 1,3,7"]),
-    (["reproduce", "--runs", "0", "--out", "{d}/r"], ["'--runs'", "greater than or equal to 1"]),
+    (["reproduce", "--runs", "0", "--out", "{d}/r"], ["runs must be at least 1"]),
     (["reproduce", "--out", "{d}/afile"], ["--out", "afile is a file"]),
     (["reproduce", "--workers", "0"], ["'--workers'", "greater than or equal to 1"]),
     (["frobnicate"], ["No such command 'frobnicate'"]),
