@@ -16,8 +16,8 @@ from sarlink.mtsp.plan import Objective, distance_matrix
 __all__ = ["ORTOOLS_TIME_LIMIT", "solve_ortools"]
 
 ORTOOLS_TIME_LIMIT = 5.0
-"""Default OR-Tools search time, s. Guided local search never stops by itself; on the 64-cell
-grid, 2 s already gives nearly the same plans (docs/mtsp.md), and a plan is made once."""
+"""Default OR-Tools search time, s. Guided local search never stops by itself (the min-max
+search stops at the floor); a plan is made once and cached."""
 
 _ORTOOLS_TICKS = 1_000_000
 """OR-Tools needs integer arc costs: the longest arc is scaled to this many ticks."""
