@@ -34,6 +34,7 @@ from rich.text import Text
 
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
+from sarlink.config.experiment import MAX_WORKERS
 from sarlink.simulation import prepare
 
 __all__ = ["sweep"]
@@ -145,7 +146,7 @@ def _dask(tasks: Sequence[_Task], seed: int, scheduler: str | None,
         else:
             try:
                 client = stack.enter_context(Client(scheduler))
-            except OSError as exc:
+            except (OSError, ValueError, TypeError) as exc:  # unreachable, or not an address
                 raise ConfigError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
         futures = {client.submit(_run_chunk, *call, pure=False): task
                    for call, task in zip(_calls(tasks, seed), tasks, strict=True)}
@@ -197,8 +198,8 @@ def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = 
     if scheduler is not None and workers is not None:
         raise ConfigError("workers does not apply to a Dask scheduler's cluster; "
                           "start its workers with `dask worker`")
-    if workers is not None and workers < 1:
-        raise ConfigError(f"workers must be at least 1, got {workers}")
+    if workers is not None and not 1 <= workers <= MAX_WORKERS:
+        raise ConfigError(f"workers must be between 1 and {MAX_WORKERS}, got {workers}")
     with storage.open_store(out_dir, experiment) as store:
         tasks = _plan(store, experiment.runs, experiment.chunk)
         if tasks:

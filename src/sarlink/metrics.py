@@ -2,9 +2,9 @@
 
 A run records when things happened (detection, notification, cumulative reachability), not
 whether they happened by one ``t_d``, so every ``t_d`` up to the horizon is read from the same
-runs (MODEL.md, Metrics). Probabilities come with 95% Wilson score intervals, means with
-standard errors. Everything is computed on whole columns: group ids from pandas, sums per
-group with ``np.bincount``.
+runs (docs/model.md, Records and metrics). Probabilities come with 95% Wilson score
+intervals, means with standard errors. Everything is computed on whole columns: group ids from
+pandas, sums per group with ``np.bincount``.
 
 The input is a table of runs as :func:`sarlink.load` returns it. The columns used are
 ``t_detect`` and ``t_notify`` (NaN when the event did not happen), and for reachability and

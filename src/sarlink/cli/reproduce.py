@@ -7,8 +7,9 @@ from typing import Annotated
 
 import typer
 
-from sarlink.cli.common import console, user_errors
+from sarlink.cli.common import console, output_folder, user_errors
 from sarlink.config import ConfigError
+from sarlink.config.experiment import MAX_WORKERS
 
 
 def _numbers(text: str | None) -> list[int] | None:
@@ -31,7 +32,7 @@ def reproduce(
     figures: Annotated[str | None, typer.Option(
         help="paper figures to reproduce, e.g. 1,3,7; default all")] = None,
     workers: Annotated[int | None, typer.Option(
-        help="local worker processes; default one per core")] = None,
+        help="local worker processes; default one per core", min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="address of a running Dask scheduler, tcp://host:port")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bars")] = False,
@@ -45,7 +46,8 @@ def reproduce(
     from sarlink.paper import reproduce as run_reproduction
 
     with user_errors():
-        result = run_reproduction(out, runs=runs, quick=quick, figures=_numbers(figures),
+        folder = output_folder(out, "--out")  # plan_times.json goes straight into it
+        result = run_reproduction(folder, runs=runs, quick=quick, figures=_numbers(figures),
                                   workers=workers, scheduler=scheduler, progress=not quiet)
     held = sum(f.holds for f in result.findings)
     findings = (f"{held} of {len(result.findings)} of the paper's findings hold"

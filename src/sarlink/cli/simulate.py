@@ -9,21 +9,42 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
+<<<<<<< HEAD
 from sarlink.cli.common import build_mission, console, print_json, user_errors
 from sarlink.planners import get_planner
 from sarlink.simulation import simulate as run_simulation
+=======
+from sarlink.cli.common import build_mission, console, plot_file, print_json, user_errors
+from sarlink.config import Mission
+from sarlink.engine import simulate as run_simulation
+from sarlink.planners import get_planner
+from sarlink.result import RunResult
+>>>>>>> inputs
 
 
 def _finite_or_none(value: float) -> float | None:
     return value if math.isfinite(value) else None
 
 
+def _save_plot(result: RunResult, mission: Mission, path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    from sarlink.plots import plot_run
+
+    fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
+    try:
+        plot_run(result, mission, ax=ax)
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+
+
 def simulate(
     planner: Annotated[str | None, typer.Option(help="covb, conb, concov, mtsp, mtsp-conb")] = None,
     drones: Annotated[int | None, typer.Option(help="number of drones N_m")] = None,
     rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
-    seed: Annotated[int, typer.Option(help="experiment seed")] = 0,
-    run: Annotated[int, typer.Option(help="run index within the experiment")] = 0,
+    seed: Annotated[int, typer.Option(help="experiment seed", min=0)] = 0,
+    run: Annotated[int, typer.Option(help="run index within the experiment", min=0)] = 0,
     alpha: Annotated[float | None, typer.Option(help="ConCov coverage weight")] = None,
     nr: Annotated[int | None, typer.Option(help="mTSP-ConB: drones flying the plan")] = None,
     td: Annotated[float | None, typer.Option(help="target duration t_d = horizon, s")] = None,
@@ -40,12 +61,16 @@ def simulate(
 ) -> None:
     """Simulate one mission run and report detection, notification and reachability."""
     with user_errors():
+        plot_file(plot)
         mission = build_mission(
-            config, planner=planner, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
+            config, {"horizon": "--td", "sigma": "--shadowing-sigma"}, planner=planner,
+            drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
             p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
             stop=stop,
         )
         result = run_simulation(mission, seed=seed, run=run, trajectory=plot is not None)
+        if plot is not None:
+            _save_plot(result, mission, plot)
     out: dict[str, Any] = {
         "planner": mission.team.planner,
         "drones": mission.team.drones,
@@ -62,15 +87,6 @@ def simulate(
         "t_reachable": _finite_or_none(result.t_reachable()),
         "connected_fraction": _finite_or_none(result.connected_fraction()),
     }
-    if plot is not None:
-        import matplotlib.pyplot as plt
-
-        from sarlink.plots import plot_run
-
-        fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
-        plot_run(result, mission, ax=ax)
-        fig.savefig(plot, dpi=150)
-        plt.close(fig)
     if json:
         print_json(out)
         return

@@ -69,6 +69,9 @@ def summarize(
     with user_errors():
         if csv and json:
             raise ConfigError("choose one of --csv and --json")
+        for t in td or []:
+            if not (math.isfinite(t) and t > 0):
+                raise ConfigError(f"--td must be a finite number of seconds > 0, got {t:g}")
         by = list(read_manifest(results)["experiment"]["grid"])
         try:
             table = summarize_runs(load(results), td=td, by=by)

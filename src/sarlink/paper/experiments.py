@@ -1,4 +1,4 @@
-"""The experiments behind the paper's figures (MODEL.md, "The paper's setting (Table 3)").
+"""The experiments behind the paper's figures (Table 3; docs/model.md, docs/reproduce.md).
 
 Figures 2–6 read one main sweep (planner × team size × communication range, simulated to
 ``t_d = 4000 s``): every ``t_d`` they show comes from the same runs' event times, so one sweep
@@ -62,7 +62,7 @@ FIG5_RANGES = (500.0, 1000.0)
 TD_SHORT = 1000.0
 """A short target duration, s: where the paper says a large r_c still gives P_s near 1."""
 TD_FIG3 = 2000.0
-"""The fixed t_d of Fig. 3, s (MODEL.md's choice)."""
+"""The fixed t_d of Fig. 3, s (the project's choice; docs/reproduce.md)."""
 TD_LONG = 4000.0
 """t_d of Figs. 4–6 and 7b, s: the flight budget, which gives the drones a chance to spread."""
 CURVE_TDS = np.arange(100.0, TD_LONG + 1, 100.0)

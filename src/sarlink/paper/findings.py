@@ -1,4 +1,4 @@
-"""Checks of the paper's findings (the list at the end of MODEL.md) against summary tables.
+"""Checks of the paper's findings (docs/reproduce.md, How the findings are decided).
 
 Each check reads the main summary table (:func:`sarlink.metrics.summarize` of the main sweep at
 ``t_d`` = 1000, 2000 and 4000 s, grouped by ``planner``, ``drones`` and ``rc``) and returns a
@@ -153,7 +153,7 @@ _Verdict = tuple[bool, list[str], list[str]]
 """Whether a claim holds, the evidence lines, and the lines saying what the data show instead."""
 
 CHECKS: list[Callable[[pd.DataFrame], Finding]] = []
-"""Every check, in the order of MODEL.md's list."""
+"""Every check, in the order of the paper's findings."""
 
 
 def _finding(claim: str) -> Callable[[Callable[[_Table], _Verdict]],
