@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import pandas as pd
 
 from sarlink.config import Mission
+from sarlink.metrics import MEASURES
 from sarlink.paper.evidence import (
     Estimate,
     Outcome,
@@ -190,6 +191,18 @@ def _same_up_to(a: str, b: str) -> int:
 
 def _gap(t: SummaryTables, a: str, b: str, rc: float, td: float, column: str) -> Estimate:
     return t.main.gap(a, b, rc, td, column, _same_up_to(a, b))
+
+
+def _order(v: Verdict, t: SummaryTables, planner: str, others: Sequence[str],
+           ranges: Sequence[float], column: str, *, higher: bool) -> None:
+    """Test at t_d = 4000 s and each range that ``planner``'s ``column`` minus each of
+    ``others``', averaged over team sizes, lies above 0 (``higher``) or below 0."""
+    for rc in ranges:
+        for p in others:
+            g = _gap(t, planner, p, rc, TD_LONG, column)
+            v.test(g.above(0.0) if higher else g.below(0.0),
+                   f"{_rc(rc)}: {_label(planner)} − {_label(p)} {MEASURES[column].label} "
+                   f"averaged over N_m: {g}")
 
 
 # -- Fig. 1 --------------------------------------------------------------------------------------
@@ -452,13 +465,8 @@ def conb_then_concov_immediate(t: SummaryTables, s: Settings) -> Verdict:
     ConB's immediate notification minus each other planner's lies above 0, and ConCov's minus
     that of mTSP, CovB and mTSP-ConB lies above 0."""
     v = Verdict()
-    for rc in FIG5_RANGES:
-        for leader, behind in (("conb", _others("conb")),
-                               ("concov", ("mtsp", "covb", "mtsp-conb"))):
-            for p in behind:
-                g = _gap(t, leader, p, rc, TD_LONG, "immediate")
-                v.test(g.above(0.0), f"{_rc(rc)}: {_label(leader)} − {_label(p)} immediate "
-                                     f"notification averaged over N_m: {g}")
+    _order(v, t, "conb", _others("conb"), FIG5_RANGES, "immediate", higher=True)
+    _order(v, t, "concov", ("mtsp", "covb", "mtsp-conb"), FIG5_RANGES, "immediate", higher=True)
     return v
 
 
@@ -470,11 +478,7 @@ def mtsp_immediate_lowest(t: SummaryTables, s: Settings) -> Verdict:
     r_c = 500 m, mTSP's immediate notification averaged over team sizes is about 0.2 (its
     interval within [0.1, 0.3]; contradicted if outside)."""
     v = Verdict()
-    for rc in FIG5_RANGES:
-        for p in _others("mtsp"):
-            g = _gap(t, "mtsp", p, rc, TD_LONG, "immediate")
-            v.test(g.below(0.0), f"{_rc(rc)}: mTSP − {_label(p)} immediate notification "
-                                 f"averaged over N_m: {g}")
+    _order(v, t, "mtsp", _others("mtsp"), FIG5_RANGES, "immediate", higher=False)
     rc = FIG5_RANGES[0]
     level = average(t.main.at("immediate", "mtsp", n, rc, TD_LONG) for n in DRONES)
     v.test(level.within(0.2 - ABOUT, 0.2 + ABOUT),
@@ -514,10 +518,7 @@ def low_reachability_conb_best(t: SummaryTables, s: Settings) -> Verdict:
         highest = max(e, key=lambda n: e[n].value)
         v.test(worst(x.below(LOW) for x in e.values()),
                f"{_rc(rc)}, {_label(p)}: highest reachability {e[highest]} at N_m = {highest}")
-    for p in _others("conb"):
-        g = _gap(t, "conb", p, rc, TD_LONG, "reachability")
-        v.test(g.above(0.0), f"{_rc(rc)}: ConB − {_label(p)} reachability averaged over N_m: "
-                             f"{g}")
+    _order(v, t, "conb", _others("conb"), [rc], "reachability", higher=True)
     return v
 
 
@@ -548,11 +549,7 @@ def mtsp_reachability_worst(t: SummaryTables, s: Settings) -> Verdict:
     minus each other planner's lies below 0 (mTSP-ConB compared only above N_r = 6 drones,
     where it differs from mTSP)."""
     v = Verdict()
-    for rc in RANGES:
-        for p in _others("mtsp"):
-            g = _gap(t, "mtsp", p, rc, TD_LONG, "reachability")
-            v.test(g.below(0.0), f"{_rc(rc)}: mTSP − {_label(p)} reachability averaged over "
-                                 f"N_m: {g}")
+    _order(v, t, "mtsp", _others("mtsp"), RANGES, "reachability", higher=False)
     return v
 
 
