@@ -538,3 +538,12 @@ def test_a_registered_planner_joins_the_experiments_and_the_figures(
     assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "P")}
     (_, values), = FIGURES[3].values(table)
     assert (values["planner"] == "MadeUp").sum() == len(DRONES) * len(RANGES)
+
+
+def test_a_point_without_notified_runs_leaves_a_claim_undecided() -> None:
+    """ConB with no run notified at N_m = 2 has no mission time (NaN): the mission-time
+    claims that read it are undecided, not failed and not an error."""
+    table = made_up(mission_time=lambda p, n, rc, td: math.nan if p == "conb" and n == 2
+                    else 500.0 + (0 if p == "conb" else 100 * (22 - n)))
+    for claim in (claims.conb_mission_time, claims.mission_times_converge):
+        assert claim({"main": table}).outcome is UNDECIDED

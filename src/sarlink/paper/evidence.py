@@ -108,11 +108,24 @@ class Estimate:
                 if self.hi < other.lo else Outcome.UNDECIDED)
 
 
+def _combined(items: Sequence[Estimate], combine: Callable[[list[float]], float]) -> Estimate:
+    """Value, lower and upper bound each combined across ``items`` by ``combine``."""
+    value, lo, hi = (combine([getattr(e, f) for e in items]) for f in ("value", "lo", "hi"))
+    return Estimate(value, lo, hi, items[0].digits)
+
+
+def _unknown(items: Sequence[Estimate]) -> bool:
+    """Whether an estimate is NaN (a point with no notified run, say): what it enters into is
+    NaN too, and decides nothing."""
+    return any(math.isnan(e.value) for e in items)
+
+
+_NOTHING = Estimate(math.nan, math.nan, math.nan)
+
+
 def average(estimates: Iterable[Estimate]) -> Estimate:
     """The mean of estimates with the mean of their bounds: conservative under any correlation."""
-    items = list(estimates)
-    return Estimate(*(float(np.mean([getattr(e, f) for e in items]))
-                      for f in ("value", "lo", "hi")), items[0].digits)
+    return _combined(list(estimates), lambda xs: float(np.mean(xs)))
 
 
 def change(first: Estimate, last: Estimate) -> Estimate:
@@ -126,27 +139,17 @@ def spread(estimates: Iterable[Estimate]) -> Estimate:
     value when every interval covers its own (its lower end at least 0)."""
     items = list(estimates)
     if _unknown(items):
-        return _unknown(items)
-    top = max(e.value for e in items) - min(e.value for e in items)
-    lo = max(e.lo for e in items) - min(e.hi for e in items)
-    hi = max(e.hi for e in items) - min(e.lo for e in items)
-    return Estimate(top, max(lo, 0.0), hi, items[0].digits)
+        return _NOTHING
+    top, bottom = _combined(items, max), _combined(items, min)
+    return Estimate(top.value - bottom.value, max(top.lo - bottom.hi, 0.0),
+                    top.hi - bottom.lo, items[0].digits)
 
 
 def peak(estimates: Iterable[Estimate]) -> Estimate:
     """The largest value, with the interval of the largest true value when every interval
     covers its own."""
     items = list(estimates)
-    return _unknown(items) or Estimate(*(max(getattr(e, f) for e in items)
-                                         for f in ("value", "lo", "hi")), items[0].digits)
-
-
-def _unknown(items: Sequence[Estimate]) -> Estimate | None:
-    """An estimate of nothing (NaN) if one of ``items`` is NaN (a point with no notified run,
-    say), which decides nothing; None otherwise."""
-    if any(math.isnan(e.value) for e in items):
-        return Estimate(math.nan, math.nan, math.nan, items[0].digits)
-    return None
+    return _NOTHING if _unknown(items) else _combined(items, max)
 
 
 class Grid:
