@@ -38,20 +38,21 @@ def reproduce(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bars")] = False,
 ) -> None:
     """Rerun the experiments behind the paper's Figs. 1-7, draw them and report which of the
-    paper's findings hold; an interrupted reproduction resumes where it stopped."""
+    paper's claims hold, are contradicted or stay undecided; an interrupted reproduction
+    resumes where it stopped."""
     import matplotlib
 
     matplotlib.use("Agg")  # files only, never a window
 
     from sarlink.paper import reproduce as run_reproduction
+    from sarlink.paper.findings import tally
 
     with user_errors():
         folder = output_folder(out, "--out")  # plan_times.json goes straight into it
         result = run_reproduction(folder, runs=runs, quick=quick, figures=_numbers(figures),
                                   workers=workers, scheduler=scheduler, progress=not quiet)
-    held = sum(f.holds for f in result.findings)
-    findings = (f"{held} of {len(result.findings)} of the paper's findings hold"
-                if result.findings else "findings not checked (they need Figs. 2-6)")
+    findings = (f"{len(result.findings)} of the paper's claims checked: "
+                f"{tally(result.findings)}" if result.findings else "no claims checked")
     console.print(f"report: {result.report_html} and {result.report_md} "
                   f"({result.runs} runs per point, {result.seconds:.0f} s); {findings}",
                   highlight=False, soft_wrap=True)

@@ -9,17 +9,11 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-<<<<<<< HEAD
-from sarlink.cli.common import build_mission, console, print_json, user_errors
-from sarlink.planners import get_planner
-from sarlink.simulation import simulate as run_simulation
-=======
 from sarlink.cli.common import build_mission, console, plot_file, print_json, user_errors
 from sarlink.config import Mission
-from sarlink.engine import simulate as run_simulation
 from sarlink.planners import get_planner
 from sarlink.result import RunResult
->>>>>>> inputs
+from sarlink.simulation import simulate as run_simulation
 
 
 def _finite_or_none(value: float) -> float | None:

@@ -1,4 +1,4 @@
-"""Rerun the paper's evaluation: sweeps, plan timing, summary tables, figures, findings, report.
+"""Rerun the paper's evaluation: sweeps, plan timing, summary tables, figures, claims, report.
 
 Layout of the output folder::
 
@@ -25,7 +25,7 @@ from sarlink.config import ConfigError, Mission
 from sarlink.execution import sweep
 from sarlink.paper.experiments import EXPERIMENTS, QUICK_RUNS, RUNS, plan_time_missions
 from sarlink.paper.figures import FIGURES, save
-from sarlink.paper.findings import Finding, check_all
+from sarlink.paper.findings import DEFAULT_SETTINGS, Finding, Settings, check_all
 from sarlink.paper.report import Stage, machine, write_report
 from sarlink.plantime import plan_seconds
 
@@ -47,7 +47,7 @@ class ReproductionResult:
     tables: dict[str, pd.DataFrame]
     """Summary tables by name, as written to ``out/tables``."""
     findings: list[Finding]
-    """The paper's findings checked (empty unless Figs. 2–6 were reproduced)."""
+    """The paper's claims checked: those whose figures were reproduced."""
     report_md: Path
     report_html: Path
     seconds: float
@@ -94,7 +94,8 @@ def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
 def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
               figures: Iterable[int] | None = None, workers: int | None = None,
               scheduler: str | None = None, progress: bool = True,
-              plan_iterations: int | None = None) -> ReproductionResult:
+              plan_iterations: int | None = None,
+              settings: Settings = DEFAULT_SETTINGS) -> ReproductionResult:
     """Rerun the experiments behind the paper's figures into ``out`` and report on them.
 
     Only the sweeps the requested figures need are run; runs already stored in ``out`` (by an
@@ -116,6 +117,8 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     plan_iterations
         GA iterations for Fig. 1's mTSP timing instead of the paper's 5000 (for tests only:
         the time depends on it).
+    settings
+        The choices the paper leaves open that the claims' checks depend on.
     """
     start = time.perf_counter()
     out = Path(out)
@@ -147,7 +150,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
 
     t0 = time.perf_counter()
     _write_tables(out / "tables", tables)
-    findings = check_all(tables["main"]) if "main" in tables else []
+    findings = check_all(tables, settings)
     drawn = {}
     for n in numbers:
         spec = FIGURES[n]
@@ -159,5 +162,6 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
              else f"{workers or os.cpu_count()} local processes")
     md, page = write_report(out, runs=runs, quick=quick,
                             figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
-                            findings=findings, stages=stages, seconds=seconds, workers=where)
+                            findings=findings, stages=stages, seconds=seconds, workers=where,
+                            settings=settings)
     return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages)
