@@ -13,11 +13,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from sarlink.config import ConfigError, Mission
-from sarlink.engine import simulate
 from sarlink.planners import get_planner, planner_names
 from sarlink.playback.page import render
 from sarlink.playback.scene import describe, modes, scene, setting
 from sarlink.result import RunResult
+from sarlink.simulation import simulate
 
 __all__ = ["PAGE_BUDGET", "Panel", "Replay", "compare", "replay"]
 
@@ -74,8 +74,8 @@ def compare(mission: Mission, planners: Sequence[str], seed: int, run: int) -> R
     """Fly run ``run`` of ``seed`` (same target, same take-off) with each planner in turn."""
     unknown = [p for p in planners if p not in planner_names()]
     if unknown or not planners:
-        raise ConfigError(f"planners must be among {', '.join(planner_names())}, got "
-                          f"{', '.join(planners) or 'none'}")
+        got = ", ".join(repr(p) for p in unknown) if unknown else "none"
+        raise ConfigError(f"planners must be among {', '.join(planner_names())}; got {got}")
     panels = []
     for name in planners:
         flown = mission.replace(planner=name)
