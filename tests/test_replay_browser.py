@@ -11,9 +11,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser import chromium, open_page
 from selenium.webdriver.common.by import By
 
+from browser import chromium, open_page
 from sarlink import Mission, simulate
 from sarlink.engine.codes import Mode
 from sarlink.playback import Replay, compare, replay
@@ -99,8 +99,7 @@ def test_seeking_shows_the_trajectory_s_state(browser, single) -> None:
 
 
 def test_drones_are_drawn_where_they_are_in_the_colour_of_their_mode(browser, single) -> None:
-    page, path = single
-    _load(browser, path)
+    _load(browser, single[1])
     colours = browser.execute_script("return sarlinkReplay.colours().modes")
     checked = set()
     for t in (1000.0, 3800.0):  # everyone searching; some drones returning

@@ -24,7 +24,6 @@ import pandas as pd
 
 from sarlink.config import ConfigError, Mission
 from sarlink.execution import sweep
-from sarlink.engine import simulate
 from sarlink.paper.experiments import (
     EXPERIMENTS,
     PLANNERS,
@@ -39,6 +38,7 @@ from sarlink.paper.report import ReplayLink, Stage, machine, write_report
 from sarlink.planners import get_planner
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
+from sarlink.simulation import simulate
 
 __all__ = ["ReproductionResult", "reproduce"]
 
