@@ -135,7 +135,11 @@ def test_the_timeline_holds_the_run_s_events_and_jumps_to_them(browser, single, 
     _check_state(drawn, page, 0, result.t_detect)
     assert result.detector in drawn["knowers"] and not drawn["notified"]
     assert "found at 3337 s by drone" in browser.find_element(By.CSS_SELECTOR, ".outcome").text
-    shot = tmp_path / "replay.png"
+    marks["notify"].click()
+    (drawn,) = browser.execute_script("return sarlinkReplay.state()")
+    _check_state(drawn, page, 0, result.t_notify)
+    assert drawn["notified"] and drawn["componentLinks"] > 0
+    shot = tmp_path / "replay.png"  # the README's screenshot: the news reaching the BS
     assert browser.save_screenshot(str(shot))
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert _console_errors(browser) == []

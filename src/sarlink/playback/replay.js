@@ -468,6 +468,9 @@
 
   timeline();
   legend();
+  if (panels.length === 1) {  /* beside the map, where the eye is */
+    panels[0].card.querySelector(".info").appendChild(document.getElementById("legend"));
+  }
   play.addEventListener("click", function () { if (state.playing) pause(); else start(); });
   slider.addEventListener("input", function () { seek(slider.value); });
   [speed, trail, numbers].forEach(function (c) { c.addEventListener("change", render); });
