@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import base64
 import math
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
 
@@ -61,7 +61,7 @@ class EncodedTrajectory:
 
     def json(self) -> dict[str, object]:
         """The fields by name, as the page's data block holds them."""
-        return {name: getattr(self, name) for name in self.__dataclass_fields__}
+        return asdict(self)
 
 
 def link_pairs(nodes: int) -> tuple[np.ndarray, np.ndarray]:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
 
@@ -24,7 +24,7 @@ class Event:
     drone: int | None = None
 
     def json(self) -> dict[str, object]:
-        return {"t": self.t, "kind": self.kind, "text": self.text, "drone": self.drone}
+        return asdict(self)
 
 
 def events(result: RunResult) -> list[Event]:
