@@ -12,7 +12,7 @@ from sarlink.engine.fingerprint import ENGINE, helper_modules, source_digest
 def test_the_kernel_records_the_digest_of_its_helpers() -> None:
     """Fails after an edit to a helper module until the digest is recorded again, which edits
     the kernel's file and so makes Numba recompile instead of running stale machine code."""
-    assert kernel.SOURCE_DIGEST == source_digest(), (
+    assert source_digest() == kernel.SOURCE_DIGEST, (
         "an engine module changed: run `python -m sarlink.engine.fingerprint --write`")
 
 

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import importlib
 import itertools
+import inspect
+import json
 import math
 import re
 from collections.abc import Callable, Sequence
@@ -63,6 +65,18 @@ def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     for name in ("main", "curve", "miss", "shadowing", "plan_times"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
+
+
+def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: ReproductionResult
+                                                              ) -> None:
+    assert quick.replay == quick.out / "replay-rc500.html"
+    data = re.search(r'id="sarlink-data">(.*?)</script>', quick.replay.read_text(), re.S)
+    assert data is not None
+    panels = json.loads(data.group(1))["panels"]
+    assert sorted(p["planner"] for p in panels) == sorted(PLANNERS)
+    assert all(p["rc"] == 500.0 and p["tNotify"] is not None for p in panels)
+    assert "(replay-rc500.html)" in quick.report_md.read_text()
+    assert 'href="replay-rc500.html"' in quick.report_html.read_text()
 
 
 def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(

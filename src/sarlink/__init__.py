@@ -16,6 +16,7 @@ from sarlink.config import (
 )
 from sarlink.engine import Scenario
 from sarlink.planners import get_planner, planner_names
+from sarlink.playback import Replay, replay
 from sarlink.result import RunResult, Trajectory
 from sarlink.simulation import prepare, simulate
 
@@ -43,6 +44,7 @@ __all__ = [
     "Experiment",
     "Mission",
     "MtspSettings",
+    "Replay",
     "RunResult",
     "Scenario",
     "Sensing",
@@ -53,6 +55,7 @@ __all__ = [
     "load",
     "planner_names",
     "prepare",
+    "replay",
     "simulate",
     "sweep",
 ]

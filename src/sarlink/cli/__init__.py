@@ -6,6 +6,7 @@ import typer
 
 from sarlink.cli.errors import Guarded
 from sarlink.cli.plan import plan
+from sarlink.cli.replay import replay
 from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
 from sarlink.cli.summarize import summarize
@@ -24,6 +25,7 @@ app.command()(plan)
 app.command()(sweep)
 app.command()(summarize)
 app.command()(reproduce)
+app.command()(replay)
 
 
 @app.callback()

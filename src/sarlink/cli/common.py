@@ -64,6 +64,13 @@ def plot_file(path: Path | None, option: str = "--plot") -> Path | None:
     if suffix not in formats:
         raise ConfigError(f"{option} {path}: the file name must end in a figure format, one of "
                           f".{', .'.join(sorted(formats))}")
+    return output_file(path, option)
+
+
+def output_file(path: Path | None, option: str) -> Path | None:
+    """Check a file to write before any work is done: not a folder, in a folder that exists."""
+    if path is None:
+        return None
     if path.is_dir():
         raise ConfigError(f"{option} {path} is a folder; a file name is expected")
     if not path.parent.is_dir():

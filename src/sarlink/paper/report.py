@@ -36,7 +36,7 @@ from sarlink.paper.figures import FIGURES
 from sarlink.paper.findings import CLAIMS, DEFAULT_SETTINGS, Finding, Settings, tally
 from sarlink.planners import get_planner, planner_names
 
-__all__ = ["Stage", "machine", "write_report"]
+__all__ = ["ReplayLink", "Stage", "machine", "write_report"]
 
 
 @dataclass(frozen=True)
@@ -46,6 +46,14 @@ class Stage:
     name: str
     detail: str
     seconds: float
+
+
+@dataclass(frozen=True)
+class ReplayLink:
+    """A replay page beside the report, and what it shows."""
+
+    page: Path
+    about: str
 
 
 @dataclass(frozen=True)
@@ -79,7 +87,13 @@ class _Image:
     caption: str
 
 
-_Block = _Heading | _Para | _List | _Table | _Image
+@dataclass(frozen=True)
+class _Link:
+    text: str
+    href: str
+
+
+_Block = _Heading | _Para | _List | _Table | _Image | _Link
 
 
 def machine() -> dict[str, str]:
@@ -207,10 +221,18 @@ def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame
     return blocks
 
 
+def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
+    if link is None:
+        return []
+    name = link.page.relative_to(out).as_posix()
+    return [_Heading("Watch a mission", 2), _Para(link.about),
+            _Link(f"Open {name} (beside this report; any browser, no network needed)", name)]
+
+
 def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
               tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
-              settings: Settings, stages: Sequence[Stage], seconds: float, workers: str
-              ) -> list[_Block]:
+              settings: Settings, stages: Sequence[Stage], seconds: float, workers: str,
+              replay: ReplayLink | None) -> list[_Block]:
     intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
              "\"Connectivity considerations for mission planning of a search and rescue drone "
              f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
@@ -218,7 +240,7 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
     return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
             *_claims(findings, tables, settings), *_setting(runs, quick),
             *_timing(seconds, stages, workers),
-            *_figures(out, figures, tables)]
+            *_figures(out, figures, tables), *_replay(out, replay)]
 
 
 # -- rendering ----------------------------------------------------------------------------------
@@ -249,6 +271,8 @@ def _markdown(blocks: Sequence[_Block]) -> str:
                              f"{_md_table(frame)}\n\n</details>")
             case _Image(png, caption):
                 parts.append(f"![{caption}]({png.as_posix()})\n\n*{caption}*")
+            case _Link(text, href):
+                parts.append(f"[{text}]({href})")
     return "\n\n".join(parts) + "\n"
 
 
@@ -294,6 +318,8 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
                 parts.append(f'<figure><img src="data:image/png;base64,{data}" '
                              f'alt="{html.escape(caption)}"><figcaption>{html.escape(caption)}'
                              "</figcaption></figure>")
+            case _Link(text, href):
+                parts.append(f'<p><a href="{html.escape(href)}">{html.escape(text)}</a></p>')
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             "<title>sarlink: reproduction of the paper</title>"
             f"<style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
@@ -302,16 +328,18 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
 def write_report(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
                  tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
                  stages: Sequence[Stage], seconds: float, workers: str,
-                 settings: Settings = DEFAULT_SETTINGS) -> tuple[Path, Path]:
+                 settings: Settings = DEFAULT_SETTINGS,
+                 replay: ReplayLink | None = None) -> tuple[Path, Path]:
     """Write ``out/report.md`` and ``out/report.html``; return their paths.
 
     ``figures`` maps figure numbers to their PNG files inside ``out``; ``tables`` holds the
     summary tables the figures were drawn from and ``findings`` the claims checked on them,
-    under ``settings``; ``workers`` says what ran the simulations.
+    under ``settings``; ``workers`` says what ran the simulations; ``replay`` is a replay page
+    inside ``out`` to link.
     """
     blocks = _document(out, runs=runs, quick=quick, figures=figures, tables=tables,
                        findings=findings, settings=settings, stages=stages, seconds=seconds,
-                       workers=workers)
+                       workers=workers, replay=replay)
     md, page = out / "report.md", out / "report.html"
     md.write_text(_markdown(blocks), encoding="utf-8")
     page.write_text(_html(blocks, out), encoding="utf-8")

@@ -8,6 +8,7 @@ Layout of the output folder::
                            plan_times
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
+    replay-rc500.html      one run flown by every planner, replayed side by side (linked)
 """
 
 from __future__ import annotations
@@ -23,11 +24,21 @@ import pandas as pd
 
 from sarlink.config import ConfigError, Mission
 from sarlink.execution import sweep
-from sarlink.paper.experiments import EXPERIMENTS, QUICK_RUNS, RUNS, plan_time_missions
+from sarlink.paper.experiments import (
+    EXPERIMENTS,
+    PLANNERS,
+    QUICK_RUNS,
+    RUNS,
+    SEED,
+    plan_time_missions,
+)
 from sarlink.paper.figures import FIGURES, save
 from sarlink.paper.findings import DEFAULT_SETTINGS, Finding, Settings, check_all
-from sarlink.paper.report import Stage, machine, write_report
+from sarlink.paper.report import ReplayLink, Stage, machine, write_report
+from sarlink.planners import get_planner
 from sarlink.plantime import plan_seconds
+from sarlink.playback import compare
+from sarlink.simulation import simulate
 
 __all__ = ["ReproductionResult", "reproduce"]
 
@@ -53,6 +64,8 @@ class ReproductionResult:
     seconds: float
     """Wall time of the call, report writing aside."""
     stages: list[Stage]
+    replay: Path
+    """The side-by-side replay of one run at r_c = 500 m that the report links."""
 
 
 def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
@@ -89,6 +102,25 @@ def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
     for name, table in tables.items():
         table.to_csv(folder / f"{name}.csv", index=False)
         table.to_parquet(folder / f"{name}.parquet", index=False)
+
+
+def _replay(out: Path) -> ReplayLink:
+    """Every planner flying one run at r_c = 500 m, side by side (``replay-rc500.html``): the
+    first run of the paper's seed that every planner notifies, so that each panel shows a
+    detection and the multihop path that carried it to the BS."""
+    mission = Mission.build(drones=10, rc=500.0)
+    run = next((k for k in range(100) if all(
+        simulate(mission.replace(planner=p), seed=SEED, run=k).t_notify is not None
+        for p in PLANNERS)), 0)
+    page = compare(mission, PLANNERS, SEED, run)
+    times = ", ".join(f"{get_planner(p.mission.team.planner).label} {p.result.t_notify:g} s"
+                      for p in page.panels if p.result.t_notify is not None)
+    about = (f"Run {run} of seed {SEED} at N = 10, r_c = 500 m, t_d = "
+             f"{mission.timing.horizon:g} s, flown by each planner (same target, same take-off) "
+             "and replayed side by side under one time control: the first run of the seed that "
+             "every planner notifies, so that each panel shows a detection and how the news "
+             f"travelled to the BS. The BS was notified at: {times}.")
+    return ReplayLink(page.write(out / "replay-rc500.html"), about)
 
 
 def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
@@ -157,11 +189,16 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         drawn[n] = save(spec.draw(*(tables[t] for t in spec.tables)), out / "figures", f"fig{n}")
     stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
                         time.perf_counter() - t0))
+    t0 = time.perf_counter()
+    replay = _replay(out)
+    stages.append(Stage("replay", f"{replay.page.name}: one run by each planner",
+                        time.perf_counter() - t0))
     seconds = time.perf_counter() - start
     where = (f"Dask scheduler {scheduler}" if scheduler is not None
              else f"{workers or os.cpu_count()} local processes")
     md, page = write_report(out, runs=runs, quick=quick,
                             figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
                             findings=findings, stages=stages, seconds=seconds, workers=where,
-                            settings=settings)
-    return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages)
+                            settings=settings, replay=replay)
+    return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages,
+                              replay.page)
