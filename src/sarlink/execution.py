@@ -13,7 +13,7 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Generator, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from contextlib import ExitStack, closing, contextmanager
 from pathlib import Path
@@ -36,13 +36,14 @@ from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.engine import prepare
 
-__all__ = ["sweep"]
+__all__ = ["sweep", "sweep_all"]
 
 
 # -- tasks and their execution -----------------------------------------------------------------
 
 
 class _Task(NamedTuple):
+    store: storage.Store
     point: storage.Point
     runs: range
 
@@ -58,7 +59,7 @@ def _plan(store: storage.Store, runs: int, chunk: int) -> list[_Task]:
     another chunk size neither redo nor double any run; the order lets a summary of a sweep
     half done cover every grid point.
     """
-    tasks = [_Task(point, range(start, min(start + chunk, gap.stop)))
+    tasks = [_Task(store, point, range(start, min(start + chunk, gap.stop)))
              for point in store.points
              for gap in store.missing(point, runs)
              for start in range(gap.start, gap.stop, chunk)]
@@ -74,9 +75,9 @@ def _run_chunk(mission_json: str, seed: int, start: int, stop: int) -> pa.Table:
                                              for k in range(start, stop)])
 
 
-def _calls(tasks: Sequence[_Task], seed: int) -> list[tuple[str, int, int, int]]:
+def _calls(tasks: Sequence[_Task]) -> list[tuple[str, int, int, int]]:
     texts = {t.point.hash: t.point.mission.model_dump_json() for t in tasks}
-    return [(texts[t.point.hash], seed, t.runs.start, t.runs.stop) for t in tasks]
+    return [(texts[t.point.hash], t.store.seed, t.runs.start, t.runs.stop) for t in tasks]
 
 
 def _exit_with(parent: int) -> None:
@@ -113,7 +114,7 @@ def _environment(env: dict[str, str]) -> Iterator[None]:
                 os.environ[name] = value
 
 
-def _pool(tasks: Sequence[_Task], seed: int, workers: int) -> _Results:
+def _pool(tasks: Sequence[_Task], workers: int) -> _Results:
     """Run ``tasks`` in a local process pool; yield each as it finishes."""
     # spawn: workers start from a clean interpreter (no forked threads or locks), with the
     # environment of the moment they start
@@ -122,7 +123,7 @@ def _pool(tasks: Sequence[_Task], seed: int, workers: int) -> _Results:
             workers, mp_context=context, initializer=_init_worker,
             initargs=(os.getpid(),)) as pool:
         futures = {pool.submit(_run_chunk, *call): task
-                   for call, task in zip(_calls(tasks, seed), tasks, strict=True)}
+                   for call, task in zip(_calls(tasks), tasks, strict=True)}
         try:
             for future in as_completed(futures):
                 yield futures[future], future.result()
@@ -130,8 +131,7 @@ def _pool(tasks: Sequence[_Task], seed: int, workers: int) -> _Results:
             pool.shutdown(cancel_futures=True)
 
 
-def _dask(tasks: Sequence[_Task], seed: int, scheduler: str | None,
-          workers: int) -> _Results:
+def _dask(tasks: Sequence[_Task], scheduler: str | None, workers: int) -> _Results:
     """Run ``tasks`` on the Dask cluster at ``scheduler``, or on a new local one."""
     from distributed import Client, LocalCluster
     from distributed import as_completed as dask_completed
@@ -148,7 +148,7 @@ def _dask(tasks: Sequence[_Task], seed: int, scheduler: str | None,
             except OSError as exc:
                 raise ConfigError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
         futures = {client.submit(_run_chunk, *call, pure=False): task
-                   for call, task in zip(_calls(tasks, seed), tasks, strict=True)}
+                   for call, task in zip(_calls(tasks), tasks, strict=True)}
         try:
             for future in dask_completed(futures):
                 yield futures[future], future.result()
@@ -192,6 +192,21 @@ def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = 
     progress
         Show a progress bar (only when standard output is a terminal).
     """
+    (runs,) = sweep_all([(experiment, out_dir)], workers=workers, scheduler=scheduler,
+                        dask_local=dask_local, progress=progress)
+    return runs
+
+
+def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | None = None,
+              scheduler: str | None = None, dask_local: bool = False, progress: bool = True,
+              on_runs: Callable[[int], None] | None = None) -> list[pd.DataFrame]:
+    """Sweep several experiments, each into its own folder, with one pool of workers.
+
+    The same as :func:`sweep` for each ``(experiment, out_dir)`` of ``jobs``, but their tasks
+    share the workers, so that many small experiments (the candidates of ``sarlink design``)
+    pay for starting the workers once. ``on_runs(k)`` is called whenever ``k`` more runs are
+    stored. Returns the runs of each experiment, in the order of ``jobs``.
+    """
     if scheduler is not None and dask_local:
         raise ConfigError("scheduler and dask_local exclude each other")
     if scheduler is not None and workers is not None:
@@ -199,17 +214,25 @@ def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = 
                           "start its workers with `dask worker`")
     if workers is not None and workers < 1:
         raise ConfigError(f"workers must be at least 1, got {workers}")
-    with storage.open_store(out_dir, experiment) as store:
-        tasks = _plan(store, experiment.runs, experiment.chunk)
+    with ExitStack() as stack:
+        stores = [stack.enter_context(storage.open_store(out_dir, experiment))
+                  for experiment, out_dir in jobs]
+        tasks = [task for store, (experiment, _) in zip(stores, jobs, strict=True)
+                 for task in _plan(store, experiment.runs, experiment.chunk)]
         if tasks:
             n = min(workers or os.cpu_count() or 1, len(tasks))
-            results = (_pool(tasks, experiment.seed, n) if scheduler is None and not dask_local
-                       else _dask(tasks, experiment.seed, scheduler, n))
-            total = experiment.runs * len(store.points)
+            results = (_pool(tasks, n) if scheduler is None and not dask_local
+                       else _dask(tasks, scheduler, n))
+            total = sum(experiment.runs * len(store.points)
+                        for store, (experiment, _) in zip(stores, jobs, strict=True))
+            name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
             with _progress_bar(progress and sys.stdout.isatty()) as bar, closing(results):
-                job = bar.add_task(experiment.name, total=total,
+                job = bar.add_task(name, total=total,
                                    completed=total - sum(len(t.runs) for t in tasks))
                 for task, table in results:
-                    store.write(task.point, task.runs, table)
+                    task.store.write(task.point, task.runs, table)
                     bar.advance(job, len(task.runs))
-        return store.frame(experiment.runs)
+                    if on_runs is not None:
+                        on_runs(len(task.runs))
+        return [store.frame(experiment.runs)
+                for store, (experiment, _) in zip(stores, jobs, strict=True)]
