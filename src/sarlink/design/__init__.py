@@ -19,6 +19,7 @@ from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.search import search
 from sarlink.design.sequential import Verdict
+from sarlink.execution import start_workers
 
 __all__ = [
     "Candidate",
@@ -53,10 +54,9 @@ def design(request: DesignRequest, out: str | Path = DEFAULT_OUT, *, workers: in
                    TextColumn("candidates decided, {task.fields[used]:,} runs used, "
                               "{task.fields[simulated]:,} simulated"),
                    disable=not (progress and sys.stdout.isatty()))
-    with bar:
+    with start_workers(workers, scheduler=scheduler, dask_local=dask_local) as pool, bar:
         task = bar.add_task("design", total=None, used=0, simulated=0)
-        runs = Runs(out, request.seed, request.td, workers=workers, scheduler=scheduler,
-                    dask_local=dask_local,
+        runs = Runs(out, request.seed, request.td, pool=pool,
                     on_runs=lambda k: bar.update(task, simulated=runs.simulated))
 
         def rounds(decided: int, opened: int, used: int) -> None:

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from sarlink.config import Experiment, Mission, mission_hash
-from sarlink.execution import sweep_all
+from sarlink.execution import Workers, sweep_all
 from sarlink.metrics import wilson
 
 __all__ = ["Runs", "Tally"]
@@ -63,15 +63,15 @@ class Tally:
 
 
 class Runs:
-    """Runs of missions stored under ``root``; :meth:`grow` runs what is missing."""
+    """Runs of missions stored under ``root``; :meth:`grow` runs what is missing on ``pool``
+    (kept for every round of a design), or on workers started for each call."""
 
-    def __init__(self, root: str | Path, seed: int, td: float, *, workers: int | None = None,
-                 scheduler: str | None = None, dask_local: bool = False,
+    def __init__(self, root: str | Path, seed: int, td: float, *, pool: Workers | None = None,
                  on_runs: Callable[[int], None] | None = None) -> None:
         self.folder = Path(root) / f"seed-{seed}"
         self.seed = seed
         self.td = td
-        self.workers, self.scheduler, self.dask_local = workers, scheduler, dask_local
+        self.pool = pool
         self._on_runs = on_runs
         self._tallies: dict[str, Tally] = {}
         self.simulated = 0
@@ -95,8 +95,7 @@ class Runs:
             if self._on_runs is not None:
                 self._on_runs(runs)
 
-        frames = sweep_all(jobs, workers=self.workers, scheduler=self.scheduler,
-                           dask_local=self.dask_local, progress=False, on_runs=count)
+        frames = sweep_all(jobs, progress=False, on_runs=count, pool=self.pool)
         for (mission, _), frame in zip(wanted, frames, strict=True):
             t_notify = frame["t_notify"].to_numpy(dtype=float)
             self._tallies[mission_hash(mission)] = Tally(t_notify <= self.td, t_notify)
