@@ -20,9 +20,10 @@ from sarlink.result import RunResult, Trajectory
 
 if TYPE_CHECKING:
     from sarlink.execution import sweep
+    from sarlink.sizing import design
     from sarlink.storage import load
 
-_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage"}
+_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage", "design": "sarlink.sizing"}
 """Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
 that a single simulation starts without them."""
 
@@ -48,6 +49,7 @@ __all__ = [
     "Team",
     "Timing",
     "Trajectory",
+    "design",
     "get_planner",
     "load",
     "planner_names",

@@ -2,6 +2,7 @@
 
 import typer
 
+from sarlink.cli.design import design
 from sarlink.cli.plan import plan
 from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
@@ -20,6 +21,7 @@ app.command()(plan)
 app.command()(sweep)
 app.command()(summarize)
 app.command()(reproduce)
+app.command()(design)
 
 
 @app.callback()

@@ -12,9 +12,9 @@ from typing import Any, Self
 from pydantic import Field, field_validator, model_validator
 
 from sarlink.config import Checked, ConfigError, Mission, param_groups
-from sarlink.design.candidates import Candidate, Variant
-from sarlink.design.sequential import Schedule
 from sarlink.planners import planner_names
+from sarlink.sizing.candidates import Candidate, Variant
+from sarlink.sizing.sequential import Schedule
 
 __all__ = ["DesignRequest"]
 
@@ -91,20 +91,20 @@ class DesignRequest(Checked):
     def _consistent(self) -> Self:
         horizon = self.mission.timing.horizon
         if self.td > horizon:
-            raise ValueError(f"td = {self.td:g} s is beyond the mission's horizon of "
+            raise ValueError(f"td: {self.td:g} s is beyond the mission's horizon of "
                              f"{horizon:g} s (timing.horizon)")
         if self.first_runs > self.candidate_runs:
-            raise ValueError(f"first_runs ({self.first_runs}) exceeds candidate_runs "
+            raise ValueError(f"first_runs: {self.first_runs} exceeds candidate_runs "
                              f"({self.candidate_runs})")
         try:
             self.base()
         except ConfigError as exc:
-            raise ValueError(f"td = {self.td:g} s: {exc}") from None
+            raise ValueError(f"td: {self.td:g} s does not fit the mission: {exc}") from None
         for variant in self.variants():  # every combination must be a valid mission
             try:
                 Candidate(variant, 1).mission(self.mission)
             except ConfigError as exc:
-                raise ValueError(f"{variant.label}: {exc}") from None
+                raise ValueError(f"options: {variant.label}: {exc}") from None
         return self
 
     def base(self) -> Mission:
