@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -12,7 +13,7 @@ from sarlink.sizing import DesignAnswer, Estimate
 
 
 def _errorbar(ax: plt.Axes, x: Sequence[float], estimates: Sequence[Estimate],
-              **style: object) -> None:
+              **style: Any) -> None:
     p = np.array([e.p for e in estimates])
     lo = np.array([e.lo for e in estimates])
     hi = np.array([e.hi for e in estimates])
