@@ -63,8 +63,8 @@ def _setting(planner: PlannerAnswer) -> str:
     if planner.tuning is None or planner.chosen is None:
         return "–"
     tuning = planner.tuning
-    same = tuning.equivalent
-    spread = f" (as good: {', '.join(f'{v:g}' for v in same)})" if len(same) > 1 else ""
+    others = [v for v in tuning.equivalent if v != planner.chosen.value]
+    spread = f" (not told apart: {', '.join(f'{v:g}' for v in others)})" if others else ""
     return f"{tuning.setting} = {planner.chosen.value:g}{spread}"
 
 

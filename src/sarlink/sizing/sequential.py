@@ -106,8 +106,14 @@ def worse(a: np.ndarray, b: np.ndarray, error: float) -> bool:
 def not_worse_by(a: np.ndarray, b: np.ndarray, margin: float, error: float) -> bool:
     """Whether the runs show ``P_s(b) - P_s(a) < margin`` (paired, same runs).
 
-    ``P_s(b) - P_s(a) = Pr{b succeeds, a fails} - Pr{a succeeds, b fails}`` is at most the
-    first term, whose exact upper bound is used: conservative and free of approximations.
+    The difference is ``d · (2q - 1)``, with ``d`` the probability that exactly one of the two
+    succeeds and ``q`` the chance that it is ``b`` when one does. Exact upper bounds on ``d``
+    (from the discordant runs among all) and on ``q`` (from ``b``'s share of the discordant
+    runs, conditionally exact), each wrong with probability at most ``error / 2``, bound it.
     """
     b_only = int(np.count_nonzero(b & ~a))
-    return upper_bound(b_only, len(a), error) < margin
+    discordant = b_only + int(np.count_nonzero(a & ~b))
+    if discordant == 0:
+        return upper_bound(0, len(a), error / 2) < margin
+    edge = 2 * upper_bound(b_only, discordant, error / 2) - 1
+    return edge <= 0 or upper_bound(discordant, len(a), error / 2) * edge < margin
