@@ -8,6 +8,7 @@ from typing import Any
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from sarlink.sizing import DesignAnswer, Estimate
 
@@ -51,6 +52,8 @@ def plot_design(answer: DesignAnswer) -> Figure:
         ax.plot(float(tuning.best.value or 0), tuning.best.p, marker="*", ms=16, color="gold",
                 mec="black", ls="none", zorder=5, label=f"best {tuning.setting}")
         ax.axhline(request.ps, color="black", ls="--", lw=1)
+        if not isinstance(tuning.best.value, float):
+            ax.xaxis.set_major_locator(MaxNLocator(integer=True))
         ax.set(xlabel=tuning.setting, ylabel="P_s", ylim=(-0.02, 1.02),
                title=f"{planner.label}, {planner.smallest} drones")
         ax.legend(fontsize=8, loc="lower right")
