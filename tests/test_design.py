@@ -7,6 +7,10 @@ from __future__ import annotations
 
 import json
 import math
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -232,3 +236,28 @@ def test_cli_prints_json_and_draws_the_figure(tmp_path: Path) -> None:
     assert [p["planner"] for p in data["planners"]] == ["covb", "concov"]
     assert data["planners"][1]["tuning"]["setting"] == "alpha"
     assert figure.stat().st_size > 10_000
+
+
+def test_a_killed_design_resumes_to_the_same_answer(
+        tmp_path: Path, adaptive: tuple[Path, DesignAnswer]) -> None:
+    """SIGKILL in the middle of a design: every finished chunk is kept and the rerun gives the
+    uninterrupted answer without simulating them again."""
+    _, full = adaptive
+    argv = [sys.executable, "-c", "from sarlink.cli import app; app()", "design",
+            "--size", "2000", "--rc", "500", "--td", "600", "--ps", str(REQUIRED),
+            "--planner", "covb", "--planner", "concov",
+            "--alpha-step", "0.5", "--alpha-tol", "0.5", "--max-drones", "5",
+            "--candidate-runs", "1600", "--workers", "1", "--out", str(tmp_path), "--quiet"]
+    process = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 120
+    while len(list(tmp_path.glob("seed-2024/*/points/*/runs-*.parquet"))) < 5:
+        assert process.poll() is None and time.monotonic() < deadline
+        time.sleep(0.02)
+    process.send_signal(signal.SIGKILL)
+    process.wait()
+    stored = sum(len(load(f)) for f in (tmp_path / "seed-2024").iterdir()
+                 if (f / "experiment.json").exists())
+    assert 0 < stored < full.runs_used
+    again = design(full.request, tmp_path, progress=False)
+    assert again.to_json()["planners"] == full.to_json()["planners"]
+    assert again.runs_simulated == full.runs_used - stored

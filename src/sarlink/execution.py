@@ -2,7 +2,9 @@
 
 :func:`sweep` cuts each point's missing runs into tasks of ``chunk`` runs, runs them in a local
 process pool or on a Dask cluster, and writes each finished task as one Parquet file
-(:mod:`sarlink.storage`); a sweep started again skips what is stored.
+(:mod:`sarlink.storage`); a sweep started again skips what is stored. :func:`sweep_all` does
+the same for several experiments on one set of workers, which :func:`start_workers` can keep
+across calls (``sarlink design`` sweeps its candidates in rounds).
 """
 
 from __future__ import annotations
