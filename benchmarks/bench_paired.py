@@ -12,7 +12,9 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 
     python benchmarks/bench_paired.py fff07f0 --cases covb:22,conb:22 --runs 10 --rounds 6
 
-Both kernels must take the same inputs (the ``Params`` fields and the kernel's arguments).
+Both kernels must take the same arguments; the ``Params`` fields are matched by name, and
+the results are compared in a common form (the 8-tuple of kernels before the split into
+phases and the :class:`~sarlink.engine.records.RunRecord` since).
 """
 
 from __future__ import annotations
@@ -48,13 +50,25 @@ def load_kernel(source: str, name: str, folder: Path) -> ModuleType:
     return module
 
 
+def outcome(out: tuple) -> list[np.ndarray]:
+    """A kernel's result as a list of arrays: events, records, trajectory."""
+    if hasattr(out, "track"):  # a RunRecord
+        events = np.array([out.t_detect, out.t_notify, float(out.detector),
+                           1.0 if out.immediate else 0.0])
+        tr = out.track
+        return [events, out.reach_cum, out.conn_cum, tr.positions, tr.headings, tr.knows,
+                tr.bs_route, tr.mode]
+    return [np.asarray(a) for a in out[:8]]
+
+
 def run_once(kernel: ModuleType, mission: Mission, seed: int, run: int) -> tuple[float, tuple]:
     """Wall seconds of one kernel call and its result, from fresh random streams."""
     prepared = prepare(mission)
     streams = run_streams(seed, run)
     scenario = draw_scenario(mission, streams.scenario)
     pos0 = np.tile(np.asarray(mission.area.bs_xy, dtype=float), (mission.team.drones, 1))
-    args = (kernel.Params(*prepared.params), float(scenario.target[0]),
+    params = kernel.Params(**{f: getattr(prepared.params, f) for f in kernel.Params._fields})
+    args = (params, float(scenario.target[0]),
             float(scenario.target[1]), pos0, takeoff_headings(scenario, prepared.distributed),
             prepared.waypoints, prepared.wp_start, prepared.cp_steps, streams.turn,
             streams.shadow, streams.look)
@@ -76,8 +90,8 @@ def measure(old_source: str, case: str, runs: int, rounds: int, new_first: bool)
         for tag in kernels:  # compile in that order
             run_once(kernels[tag], mission, 1, 0)
         same = sum(all(np.array_equal(a, b, equal_nan=a.dtype.kind == "f") for a, b in
-                       zip(run_once(kernels["old"], mission, 1, r)[1],
-                           run_once(kernels["new"], mission, 1, r)[1], strict=True))
+                       zip(outcome(run_once(kernels["old"], mission, 1, r)[1]),
+                           outcome(run_once(kernels["new"], mission, 1, r)[1]), strict=True))
                    for r in range(runs))
         ratios = []
         for rnd in range(rounds):

@@ -10,8 +10,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sarlink import Mission, simulate
-from sarlink.engine.kernel import _draw_shadowing, _linked, _links
-from sarlink.engine.run import prepare
+from sarlink.engine.graph import linked, links
+from sarlink.engine.radio import draw_shadowing
+from sarlink.simulation import prepare
 
 PLANNERS = ["covb", "conb", "concov"]
 
@@ -85,9 +86,9 @@ def test_fraction_of_links_up_at_distance_d_is_the_normal_cdf(sigma: float,
     up = np.zeros((m, m))
     rng = np.random.default_rng(17)
     for _ in range(draws):
-        _draw_shadowing(thr2, params, rng)
-        _links(px, py, pz, thr2, adj, 0.0, adj[:0])
-        up += [[_linked(adj, a, b) for b in range(m)] for a in range(m)]
+        draw_shadowing(thr2, params, rng)
+        links(px, py, pz, thr2, adj, 0.0, adj[:0])
+        up += [[linked(adj, a, b) for b in range(m)] for a in range(m)]
     for a in range(m):
         for b in range(a + 1, m):
             d = math.hypot(px[a] - px[b], py[a] - py[b])

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from sarlink import Mission, simulate
-from sarlink.engine.run import prepare
+from sarlink.simulation import prepare
 
 
 def test_two_drones_find_and_report_every_target_within_4000_s() -> None:

@@ -14,9 +14,10 @@ from sarlink.config import (
     Team,
     Timing,
 )
-from sarlink.engine import Scenario, prepare, simulate
+from sarlink.engine import Scenario
 from sarlink.planners import get_planner, planner_names
 from sarlink.result import RunResult, Trajectory
+from sarlink.simulation import prepare, simulate
 
 if TYPE_CHECKING:
     from sarlink.execution import sweep

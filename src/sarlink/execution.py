@@ -36,7 +36,7 @@ from rich.text import Text
 
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
-from sarlink.engine import prepare
+from sarlink.simulation import prepare
 
 __all__ = ["Workers", "start_workers", "sweep", "sweep_all"]
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import time
 
 from sarlink.config import Mission
-from sarlink.engine import prepare
 from sarlink.mtsp import solve_for
 from sarlink.planners import get_planner
+from sarlink.simulation import prepare
 
 
 def plan_seconds(mission: Mission, seed: int = 0) -> float:

@@ -10,8 +10,8 @@ import typer
 from rich.table import Table
 
 from sarlink.cli.common import build_mission, console, print_json, user_errors
-from sarlink.engine import simulate as run_simulation
 from sarlink.planners import get_planner
+from sarlink.simulation import simulate as run_simulation
 
 
 def _finite_or_none(value: float) -> float | None:

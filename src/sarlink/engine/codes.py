@@ -9,6 +9,7 @@ class Rule(IntEnum):
     COVB = 0
     CONB = 1
     CONCOV = 2
+    NONE = 3  # no distributed drone: every drone flies a route (mTSP)
 
 
 class Mode(IntEnum):

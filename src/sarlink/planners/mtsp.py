@@ -22,5 +22,4 @@ class Mtsp:
         from sarlink.mtsp import plan_for
 
         routes = plan_for(mission, mission.team.drones).routes()
-        # no drone runs a distributed rule: rule and alpha are placeholders
-        return Steering(rule=Rule.COVB, alpha=1.0, routes=routes)
+        return Steering(rule=Rule.NONE, routes=routes)

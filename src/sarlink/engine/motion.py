@@ -1,0 +1,158 @@
+"""How drones move: when they turn home or update their direction, the boundary rule, route
+following and the move itself (docs/model.md, Drones)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from sarlink.engine.geometry import inside, unit
+from sarlink.engine.params import LANDED, RETURNING, SEARCHING, Params
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def farthest_home(p: Params) -> float:
+    """The flight home from the area's farthest corner, m (plus 1 m of margin): no drone
+    inside the area is farther, so the return-home test cannot fire before it is due."""
+    home_max = 1.0
+    for cx in (0.0, p.size):
+        for cy in (0.0, p.size):
+            home_max = max(home_max, 1.0 + math.sqrt((p.bs_x - cx) ** 2 + (p.bs_y - cy) ** 2))
+    return home_max
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def schedule(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray,
+             hy: np.ndarray, mode: np.ndarray, on_route: np.ndarray, last_change: np.ndarray,
+             deciding: np.ndarray, nhx: np.ndarray, nhy: np.ndarray) -> bool:
+    """Which distributed drones turn home and which update their direction at step ``k``.
+
+    A drone turns home at the first step at which its remaining budget minus the straight
+    flight home is under two steps (``homing``: that step may have come for some drone). A
+    drone updates its direction every ``t_s`` since its last change. ``nhx, nhy`` start as
+    the current headings; returns whether any drone decides.
+    """
+    any_deciding = False
+    t = k * p.dt
+    for i in range(hx.shape[0]):
+        nhx[i], nhy[i] = hx[i], hy[i]
+        deciding[i] = False
+        if on_route[i] or mode[i] != SEARCHING:
+            continue
+        if homing:
+            hdx, hdy = p.bs_x - px[i], p.bs_y - py[i]
+            home = math.sqrt(hdx * hdx + hdy * hdy)
+            if (p.flight_time - t) - home / p.speed < 2.0 * p.dt:
+                mode[i] = RETURNING
+                nhx[i], nhy[i] = unit(hdx, hdy, hx[i], hy[i])
+                continue
+        if k - last_change[i] >= p.ts_steps:
+            last_change[i] = k
+            deciding[i] = any_deciding = True
+    return any_deciding
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def boundary_turn(
+    x: float, y: float, hx: float, hy: float, step: float, size: float, rng: np.random.Generator
+) -> tuple[float, float, bool]:
+    """Keep the heading if the next increment stays inside; else a random inward heading.
+
+    The inward headings are the half circle facing away from each wall the increment would
+    cross (a quarter circle at a corner). A redraw that crosses another wall adds that wall.
+    """
+    nx, ny = x + step * hx, y + step * hy
+    if inside(nx, ny, size):
+        return hx, hy, False
+    left = right = bottom = top = False
+    while True:
+        left |= nx < 0.0
+        right |= nx > size
+        bottom |= ny < 0.0
+        top |= ny > size
+        lo, hi = 0.0, 2.0 * math.pi
+        if left:
+            lo, hi = -0.5 * math.pi, 0.5 * math.pi
+        elif right:
+            lo, hi = 0.5 * math.pi, 1.5 * math.pi
+        if bottom:
+            lo, hi = (0.0, 0.5 * math.pi) if left else ((0.5 * math.pi, math.pi) if right
+                                                        else (0.0, math.pi))
+        elif top:
+            lo, hi = ((-0.5 * math.pi, 0.0) if left else ((math.pi, 1.5 * math.pi) if right
+                                                          else (math.pi, 2.0 * math.pi)))
+        theta = lo + rng.random() * (hi - lo)
+        hx, hy = math.cos(theta), math.sin(theta)
+        nx, ny = x + step * hx, y + step * hy
+        if inside(nx, ny, size):
+            return hx, hy, True
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def keep_inside(k: int, p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
+                on_route: np.ndarray, last_change: np.ndarray, nhx: np.ndarray, nhy: np.ndarray,
+                rng: np.random.Generator) -> None:
+    """Apply the boundary rule to the new heading of every searching distributed drone; a
+    boundary turn counts as a direction change."""
+    step = p.speed * p.dt
+    for i in range(nhx.shape[0]):
+        if on_route[i] or mode[i] != SEARCHING:  # flying a route, home or landed
+            continue
+        nhx[i], nhy[i], turned = boundary_turn(px[i], py[i], nhx[i], nhy[i], step, p.size, rng)
+        if turned:
+            last_change[i] = k
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def fly_route(
+    i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+    mode: np.ndarray, wp: np.ndarray, wp_next: np.ndarray, wp_end: np.ndarray, step: float,
+) -> None:
+    """Advance drone ``i`` by ``step`` metres along its waypoints; land after the last one."""
+    travel = step
+    while True:
+        k = wp_next[i]
+        tx, ty = wp[k, 0], wp[k, 1]
+        dx, dy = tx - px[i], ty - py[i]
+        d = math.sqrt(dx * dx + dy * dy)
+        if d > travel:
+            px[i] += travel * dx / d
+            py[i] += travel * dy / d
+            hx[i], hy[i] = dx / d, dy / d
+            return
+        px[i], py[i] = tx, ty
+        travel -= d
+        wp_next[i] = k + 1
+        if k + 1 >= wp_end[i]:
+            mode[i] = LANDED
+            return
+        nx, ny = wp[k + 1, 0] - tx, wp[k + 1, 1] - ty
+        hx[i], hy[i] = unit(nx, ny, hx[i], hy[i])
+        if travel <= 0.0:
+            return
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+         mode: np.ndarray, on_route: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
+         wp_end: np.ndarray) -> None:
+    """Move every drone ``V dt``: along its route, home (landing on arrival) or straight on."""
+    step = p.speed * p.dt
+    for i in range(hx.shape[0]):
+        if mode[i] == LANDED:
+            continue
+        if on_route[i]:
+            fly_route(i, px, py, hx, hy, mode, wp, wp_next, wp_end, step)
+        elif mode[i] == RETURNING:
+            dx, dy = p.bs_x - px[i], p.bs_y - py[i]
+            if dx * dx + dy * dy <= step * step:
+                px[i], py[i] = p.bs_x, p.bs_y
+                mode[i] = LANDED
+            else:
+                px[i] += step * hx[i]
+                py[i] += step * hy[i]
+        else:
+            px[i] += step * hx[i]
+            py[i] += step * hy[i]

@@ -1,0 +1,43 @@
+"""The scalars of one mission in kernel units, and the integer codes as Numba constants."""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from sarlink.engine.codes import Look, Mode, Rule, Stop
+
+SEARCHING = int(Mode.SEARCHING)
+RETURNING = int(Mode.RETURNING)
+LANDED = int(Mode.LANDED)
+COVB = int(Rule.COVB)
+CONB = int(Rule.CONB)
+CONCOV = int(Rule.CONCOV)
+PER_PERIOD = int(Look.PER_PERIOD)
+STOP_DETECTED = int(Stop.DETECTED)
+STOP_NOTIFIED = int(Stop.NOTIFIED)
+
+
+class Params(NamedTuple):
+    """Scalars of one mission, in kernel units (metres, seconds, steps)."""
+
+    size: float
+    bs_x: float
+    bs_y: float
+    speed: float
+    rule: int
+    alpha: float
+    flight_time: float
+    r: float
+    p_miss: float
+    look: int
+    rc: float
+    sigma: float
+    pathloss_exponent: float
+    altitude: float
+    dt: float
+    ts_steps: int
+    coherence_steps: int
+    n_steps: int
+    stop: int
+    record: bool
+

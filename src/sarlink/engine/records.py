@@ -1,0 +1,112 @@
+"""What a run records: event times, cumulative records at checkpoints, the trajectory.
+
+The kernel returns one :class:`RunRecord`. "Never happened" is encoded once in this layer:
+an event time of ``-1.0`` and a detector of ``-1``; the Python layer turns them into ``None``
+(:class:`sarlink.RunResult`) and the result tables into NaN / null.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from sarlink.engine.graph import has
+from sarlink.engine.params import LANDED, PER_PERIOD
+
+NEVER = -1.0
+"""The kernel's event time of an event that did not happen within the run."""
+
+
+class Track(NamedTuple):
+    """The state at every recorded step (arrays indexed ``[step, drone]``)."""
+
+    positions: np.ndarray  # (steps, N, 2) m
+    headings: np.ndarray  # (steps, N) rad
+    knows: np.ndarray  # (steps, N) bool
+    bs_route: np.ndarray  # (steps, N) bool
+    mode: np.ndarray  # (steps, N) int8 Mode
+    links: np.ndarray  # (steps, N + 2, words) uint64 adjacency bitsets
+
+
+class RunRecord(NamedTuple):
+    """One run as the kernel returns it (times in seconds; ``-1``: never)."""
+
+    t_detect: float
+    t_notify: float
+    detector: int
+    immediate: bool
+    checkpoints: np.ndarray
+    """Times of the cumulative records, s: every ``checkpoint`` and the horizon."""
+    reach_cum: np.ndarray
+    """Time the target was reachable during ``[0, checkpoints[c])``; NaN after a stop."""
+    conn_cum: np.ndarray
+    """Time integral of the fraction of drones with a route to the BS over the same."""
+    track: Track
+    """The trajectory, empty (zero steps) unless the run was recorded."""
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def new_track(steps: int, n: int, nw: int) -> Track:
+    """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row)."""
+    return Track(np.empty((steps, n, 2)), np.empty((steps, n)),
+                 np.empty((steps, n), dtype=np.bool_), np.empty((steps, n), dtype=np.bool_),
+                 np.empty((steps, n), dtype=np.int8),
+                 np.empty((steps, n + 2, nw), dtype=np.uint64))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def record_step(track: Track, k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray,
+                hy: np.ndarray, routed: np.ndarray, knows: np.ndarray, mode: np.ndarray,
+                adj: np.ndarray) -> None:
+    """Store the observed state of step ``k``."""
+    for i in range(knows.shape[0]):
+        track.positions[k, i, 0] = px[i]
+        track.positions[k, i, 1] = py[i]
+        track.headings[k, i] = math.atan2(hy[i], hx[i])
+        track.bs_route[k, i] = has(routed, i)
+    track.knows[k] = knows
+    track.mode[k] = mode
+    track.links[k] = adj
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def cut_track(track: Track, steps: int) -> Track:
+    """The first ``steps`` recorded steps (a run stopped early records fewer)."""
+    return Track(track.positions[:steps], track.headings[:steps], track.knows[:steps],
+                 track.bs_route[:steps], track.mode[:steps], track.links[:steps])
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarray,
+                     conn_cum: np.ndarray, acc_reach: float, acc_conn: float) -> int:
+    """Record the sums so far at every checkpoint of step ``k``; return the next checkpoint."""
+    while ci < cp_steps.shape[0] and cp_steps[ci] == k:
+        reach_cum[ci] = acc_reach
+        conn_cum[ci] = acc_conn
+        ci += 1
+    return ci
+
+
+@njit(cache=True, error_model="numpy")
+def carry_records(start: int, n_steps: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarray,
+                  conn_cum: np.ndarray, acc_reach: float, acc_conn: float, d_reach: float,
+                  d_conn: float) -> None:
+    """Fill the checkpoints from step ``start`` on, as if every step added ``d_reach`` and
+    ``d_conn``: summed step by step, like the full loop, so that the sums are the same."""
+    for k in range(start, n_steps + 1):
+        ci = take_checkpoints(k, cp_steps, ci, reach_cum, conn_cum, acc_reach, acc_conn)
+        acc_reach += d_reach
+        acc_conn += d_conn
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def settled(mode: np.ndarray, in_range: np.ndarray, knows: np.ndarray, look: int) -> bool:
+    """Whether no later step can differ from this one: every drone has landed, and none in
+    sensing range still looks for the target (only per-period looks repeat in place)."""
+    for i in range(mode.shape[0]):
+        if mode[i] != LANDED or (look == PER_PERIOD and in_range[i] and not knows[i]):
+            return False
+    return True
