@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import importlib
 import itertools
-import inspect
 import json
 import math
 import re

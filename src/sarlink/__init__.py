@@ -22,9 +22,10 @@ from sarlink.simulation import prepare, simulate
 
 if TYPE_CHECKING:
     from sarlink.execution import sweep
+    from sarlink.sizing import design
     from sarlink.storage import load
 
-_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage"}
+_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage", "design": "sarlink.sizing"}
 """Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
 that a single simulation starts without them."""
 
@@ -51,6 +52,7 @@ __all__ = [
     "Team",
     "Timing",
     "Trajectory",
+    "design",
     "get_planner",
     "load",
     "planner_names",

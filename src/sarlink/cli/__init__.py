@@ -4,6 +4,7 @@ from typing import Annotated
 
 import typer
 
+from sarlink.cli.design import design
 from sarlink.cli.errors import Guarded
 from sarlink.cli.plan import plan
 from sarlink.cli.replay import replay
@@ -26,6 +27,7 @@ app.command()(sweep)
 app.command()(summarize)
 app.command()(reproduce)
 app.command()(replay)
+app.command()(design)
 
 
 @app.callback()
