@@ -109,7 +109,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     (["simulate", "--pathloss-exponent", "0"], ["--pathloss-exponent", "greater than 0"]),
     (["simulate", "--look", "sometimes"], ["--look (sensing.look)", "'per-pass'"]),
     (["simulate", "--stop", "never"], ["--stop (timing.stop)", "'horizon'"]),
-    (["simulate", "--planner", "astar"], ["--planner (team.planner)", "covb, conb, concov"]),
+    (["simulate", "--planner", "astar"], ["--planner (team.planner)", "mtsp, covb, conb, mtsp-conb, concov"]),
     (["simulate", "--nr", "0"], ["--nr (team.nr)", "greater than or equal to 1"]),
     (["simulate", "--r", "0"], ["--r (sensing.r)", "greater than 0"]),
     (["simulate", "--seed", "-1"], ["'--seed'", "greater than or equal to 0"]),

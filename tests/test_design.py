@@ -209,7 +209,7 @@ def test_bad_requests_name_the_field(fields: dict[str, Any], message: str) -> No
     (["--max-drones", "0"], "--max-drones: Input should be greater than or equal to 1 (got 0)"),
     (["--td", "5000"], "--td: 5000 s is beyond the mission's horizon of 4000 s"),
     (["--option", "look"], "--option: expected NAME=VALUE[,VALUE...], got 'look'"),
-    (["--rc", "-1"], "channel.rc: Input should be greater than 0"),
+    (["--rc", "-1"], "--rc (channel.rc): Input should be greater than 0"),
 ])
 def test_cli_errors_are_one_line_naming_the_option(tmp_path: Path, args: list[str],
                                                    message: str) -> None:

@@ -167,7 +167,7 @@ def test_cli_simulate_writes_a_replay(tmp_path) -> None:
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--planners", "covb,foo"], "planners must be among covb, conb, concov, mtsp, mtsp-conb; "
+    (["--planners", "covb,foo"], "planners must be among mtsp, covb, conb, mtsp-conb, concov; "
                                  "got 'foo'"),
     (["--planners", ","], "got none"),
     (["--rc", "-5"], "channel.rc"),

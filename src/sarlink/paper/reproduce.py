@@ -26,7 +26,6 @@ from sarlink.config import ConfigError, Mission
 from sarlink.execution import sweep
 from sarlink.paper.experiments import (
     EXPERIMENTS,
-    PLANNERS,
     QUICK_RUNS,
     RUNS,
     SEED,
@@ -35,7 +34,7 @@ from sarlink.paper.experiments import (
 from sarlink.paper.figures import FIGURES, save
 from sarlink.paper.findings import DEFAULT_SETTINGS, Finding, Settings, check_all
 from sarlink.paper.report import ReplayLink, Stage, machine, write_report
-from sarlink.planners import get_planner
+from sarlink.planners import get_planner, planner_names
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
 from sarlink.simulation import simulate
@@ -109,10 +108,11 @@ def _replay(out: Path) -> ReplayLink:
     first run of the paper's seed that every planner notifies, so that each panel shows a
     detection and the multihop path that carried it to the BS."""
     mission = Mission.build(drones=10, rc=500.0)
+    planners = planner_names()
     run = next((k for k in range(100) if all(
         simulate(mission.replace(planner=p), seed=SEED, run=k).t_notify is not None
-        for p in PLANNERS)), 0)
-    page = compare(mission, PLANNERS, SEED, run)
+        for p in planners)), 0)
+    page = compare(mission, planners, SEED, run)
     times = ", ".join(f"{get_planner(p.mission.team.planner).label} {p.result.t_notify:g} s"
                       for p in page.panels if p.result.t_notify is not None)
     about = (f"Run {run} of seed {SEED} at N = 10, r_c = 500 m, t_d = "
