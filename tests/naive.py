@@ -1,4 +1,4 @@
-"""A slow, obvious reference of the mission model (MODEL.md), in plain Python.
+"""A slow, obvious reference of the mission model (docs/model.md), in plain Python.
 
 Written from the model's text, not from the kernel: angles instead of unit vectors, sets and
 a breadth-first search instead of bitsets, one function per rule. It draws its random numbers

@@ -17,6 +17,7 @@ import pytest
 from filelock import FileLock
 
 import sarlink.mtsp as mtsp
+import sarlink.mtsp.cache as plan_cache
 from sarlink import Mission
 from sarlink.config import ConfigError
 from sarlink.engine.codes import Rule
@@ -240,7 +241,7 @@ class Cache:
 def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Cache]:
     """A private, empty plan cache that counts the solves behind :func:`plan_for`."""
     monkeypatch.setenv("SARLINK_CACHE_DIR", str(tmp_path))
-    monkeypatch.setattr(mtsp, "ORTOOLS_TIME_LIMIT", 0.2)
+    monkeypatch.setattr(plan_cache, "ORTOOLS_TIME_LIMIT", 0.2)
     state = Cache(tmp_path / "plans")
     real = mtsp.solve
 
@@ -248,7 +249,7 @@ def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Cache]:
         state.calls.append(1)
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(mtsp, "solve", counting)
+    monkeypatch.setattr(plan_cache, "solve", counting)
     mtsp.clear_cache(disk=False)
     yield state
     mtsp.clear_cache(disk=False)

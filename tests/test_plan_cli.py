@@ -11,6 +11,7 @@ import typer
 from typer.testing import CliRunner
 
 import sarlink.mtsp as mtsp
+import sarlink.mtsp.cache as plan_cache
 from sarlink import Mission
 from sarlink.cli.plan import plan
 
@@ -30,7 +31,7 @@ FAST = ["--iterations", "200"]
 @pytest.fixture(autouse=True)
 def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
     monkeypatch.setenv("SARLINK_CACHE_DIR", str(tmp_path))
-    monkeypatch.setattr(mtsp, "ORTOOLS_TIME_LIMIT", 0.2)
+    monkeypatch.setattr(plan_cache, "ORTOOLS_TIME_LIMIT", 0.2)
     mtsp.clear_cache(disk=False)
     yield
     mtsp.clear_cache(disk=False)

@@ -19,8 +19,14 @@ def test_registry_matches_the_planner_modules_on_disk() -> None:
 
 
 def test_unknown_planner_is_a_clear_error() -> None:
-    with pytest.raises(KeyError, match="unknown planner 'nope'; known: covb"):
+    with pytest.raises(KeyError, match="unknown planner 'nope'; known: mtsp, covb, conb"):
         get_planner("nope")
+
+
+def test_planners_are_registered_in_the_paper_legend_order_with_distinct_styles() -> None:
+    assert planner_names() == ["mtsp", "covb", "conb", "mtsp-conb", "concov"]
+    styles = [(p.colour, p.marker) for p in PLANNERS.values()]
+    assert len({c for c, _ in styles}) == len({m for _, m in styles}) == len(styles)
 
 
 @pytest.mark.parametrize("name", list(PLANNERS))

@@ -9,21 +9,23 @@ from sarlink.config import (
     ConfigError,
     Experiment,
     Mission,
-    Mtsp,
+    MtspSettings,
     Sensing,
     Team,
     Timing,
 )
 from sarlink.engine import Scenario
 from sarlink.planners import get_planner, planner_names
+from sarlink.playback import Replay, replay
 from sarlink.result import RunResult, Trajectory
 from sarlink.simulation import prepare, simulate
 
 if TYPE_CHECKING:
     from sarlink.execution import sweep
+    from sarlink.sizing import design
     from sarlink.storage import load
 
-_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage"}
+_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage", "design": "sarlink.sizing"}
 """Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
 that a single simulation starts without them."""
 
@@ -42,17 +44,20 @@ __all__ = [
     "ConfigError",
     "Experiment",
     "Mission",
-    "Mtsp",
+    "MtspSettings",
+    "Replay",
     "RunResult",
     "Scenario",
     "Sensing",
     "Team",
     "Timing",
     "Trajectory",
+    "design",
     "get_planner",
     "load",
     "planner_names",
     "prepare",
+    "replay",
     "simulate",
     "sweep",
 ]

@@ -2,7 +2,9 @@
 
 :func:`sweep` cuts each point's missing runs into tasks of ``chunk`` runs, runs them in a local
 process pool or on a Dask cluster, and writes each finished task as one Parquet file
-(:mod:`sarlink.storage`); a sweep started again skips what is stored.
+(:mod:`sarlink.storage`); a sweep started again skips what is stored. :func:`sweep_all` does
+the same for several experiments on one set of workers, which :func:`start_workers` can keep
+across calls (``sarlink design`` sweeps its candidates in rounds).
 """
 
 from __future__ import annotations
@@ -13,11 +15,11 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Generator, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from contextlib import ExitStack, closing, contextmanager
 from pathlib import Path
-from typing import NamedTuple
+from typing import Any, NamedTuple, Protocol
 
 import pandas as pd
 import pyarrow as pa
@@ -34,15 +36,17 @@ from rich.text import Text
 
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
+from sarlink.config.experiment import MAX_WORKERS
 from sarlink.simulation import prepare
 
-__all__ = ["sweep"]
+__all__ = ["Workers", "start_workers", "sweep", "sweep_all"]
 
 
 # -- tasks and their execution -----------------------------------------------------------------
 
 
 class _Task(NamedTuple):
+    store: storage.Store
     point: storage.Point
     runs: range
 
@@ -58,7 +62,7 @@ def _plan(store: storage.Store, runs: int, chunk: int) -> list[_Task]:
     another chunk size neither redo nor double any run; the order lets a summary of a sweep
     half done cover every grid point.
     """
-    tasks = [_Task(point, range(start, min(start + chunk, gap.stop)))
+    tasks = [_Task(store, point, range(start, min(start + chunk, gap.stop)))
              for point in store.points
              for gap in store.missing(point, runs)
              for start in range(gap.start, gap.stop, chunk)]
@@ -74,9 +78,9 @@ def _run_chunk(mission_json: str, seed: int, start: int, stop: int) -> pa.Table:
                                              for k in range(start, stop)])
 
 
-def _calls(tasks: Sequence[_Task], seed: int) -> list[tuple[str, int, int, int]]:
+def _calls(tasks: Sequence[_Task]) -> list[tuple[str, int, int, int]]:
     texts = {t.point.hash: t.point.mission.model_dump_json() for t in tasks}
-    return [(texts[t.point.hash], seed, t.runs.start, t.runs.stop) for t in tasks]
+    return [(texts[t.point.hash], t.store.seed, t.runs.start, t.runs.stop) for t in tasks]
 
 
 def _exit_with(parent: int) -> None:
@@ -113,47 +117,94 @@ def _environment(env: dict[str, str]) -> Iterator[None]:
                 os.environ[name] = value
 
 
-def _pool(tasks: Sequence[_Task], seed: int, workers: int) -> _Results:
-    """Run ``tasks`` in a local process pool; yield each as it finishes."""
-    # spawn: workers start from a clean interpreter (no forked threads or locks), with the
-    # environment of the moment they start
-    context = multiprocessing.get_context("spawn")
-    with _environment(_WORKER_ENV), ProcessPoolExecutor(
-            workers, mp_context=context, initializer=_init_worker,
-            initargs=(os.getpid(),)) as pool:
-        futures = {pool.submit(_run_chunk, *call): task
-                   for call, task in zip(_calls(tasks, seed), tasks, strict=True)}
+class Workers(Protocol):
+    """Worker processes started once (:func:`start_workers`) that run the tasks of any
+    number of sweeps, so that a caller sweeping in rounds starts them only once."""
+
+    def results(self, tasks: Sequence[_Task]) -> _Results:
+        """Run ``tasks``; yield each with its table as it finishes."""
+        ...
+
+
+class _Local:
+    """A local process pool."""
+
+    def __init__(self, pool: ProcessPoolExecutor) -> None:
+        self.pool = pool
+
+    def results(self, tasks: Sequence[_Task]) -> _Results:
+        futures = {self.pool.submit(_run_chunk, *call): task
+                   for call, task in zip(_calls(tasks), tasks, strict=True)}
         try:
             for future in as_completed(futures):
                 yield futures[future], future.result()
         finally:
-            pool.shutdown(cancel_futures=True)
+            for future in futures:
+                future.cancel()
 
 
-def _dask(tasks: Sequence[_Task], seed: int, scheduler: str | None,
-          workers: int) -> _Results:
-    """Run ``tasks`` on the Dask cluster at ``scheduler``, or on a new local one."""
+class _Dask:
+    """The workers of a Dask cluster."""
+
+    def __init__(self, client: Any) -> None:
+        self.client = client
+
+    def results(self, tasks: Sequence[_Task]) -> _Results:
+        from distributed import as_completed as dask_completed
+
+        futures = {self.client.submit(_run_chunk, *call, pure=False): task
+                   for call, task in zip(_calls(tasks), tasks, strict=True)}
+        try:
+            for future in dask_completed(futures):
+                yield futures[future], future.result()
+        finally:
+            self.client.cancel(list(futures))
+
+
+def _check(workers: int | None, scheduler: str | None, dask_local: bool) -> None:
+    if scheduler is not None and dask_local:
+        raise ConfigError("scheduler and dask_local exclude each other")
+    if scheduler is not None and workers is not None:
+        raise ConfigError("workers does not apply to a Dask scheduler's cluster; "
+                          "start its workers with `dask worker`")
+    if workers is not None and not 1 <= workers <= MAX_WORKERS:
+        raise ConfigError(f"workers must be between 1 and {MAX_WORKERS}, got {workers}")
+
+
+@contextmanager
+def start_workers(workers: int | None = None, *, scheduler: str | None = None,
+                  dask_local: bool = False) -> Iterator[Workers]:
+    """Workers for :func:`sweep_all`: a local process pool of ``workers`` processes (default:
+    one per core), a Dask ``LocalCluster`` (``dask_local``), or the Dask cluster at
+    ``scheduler``. They stop when the context ends."""
+    _check(workers, scheduler, dask_local)
+    count = workers or os.cpu_count() or 1
+    if scheduler is None and not dask_local:
+        # spawn: workers start from a clean interpreter (no forked threads or locks), with
+        # the environment of the moment they start
+        context = multiprocessing.get_context("spawn")
+        with _environment(_WORKER_ENV), ProcessPoolExecutor(
+                count, mp_context=context, initializer=_init_worker,
+                initargs=(os.getpid(),)) as pool:
+            try:
+                yield _Local(pool)
+            finally:
+                pool.shutdown(cancel_futures=True)
+        return
     from distributed import Client, LocalCluster
-    from distributed import as_completed as dask_completed
 
     with ExitStack() as stack:
         if scheduler is None:
             cluster = stack.enter_context(LocalCluster(
-                n_workers=workers, threads_per_worker=1, processes=True,
+                n_workers=count, threads_per_worker=1, processes=True,
                 dashboard_address=None, env=_WORKER_ENV))
             client = stack.enter_context(Client(cluster))
         else:
             try:
                 client = stack.enter_context(Client(scheduler))
-            except OSError as exc:
+            except (OSError, ValueError, TypeError) as exc:  # unreachable, or not an address
                 raise ConfigError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
-        futures = {client.submit(_run_chunk, *call, pure=False): task
-                   for call, task in zip(_calls(tasks, seed), tasks, strict=True)}
-        try:
-            for future in dask_completed(futures):
-                yield futures[future], future.result()
-        finally:
-            client.cancel(list(futures))
+        yield _Dask(client)
 
 
 class _RunsPerSecond(ProgressColumn):
@@ -192,24 +243,46 @@ def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = 
     progress
         Show a progress bar (only when standard output is a terminal).
     """
-    if scheduler is not None and dask_local:
-        raise ConfigError("scheduler and dask_local exclude each other")
-    if scheduler is not None and workers is not None:
-        raise ConfigError("workers does not apply to a Dask scheduler's cluster; "
-                          "start its workers with `dask worker`")
-    if workers is not None and workers < 1:
-        raise ConfigError(f"workers must be at least 1, got {workers}")
-    with storage.open_store(out_dir, experiment) as store:
-        tasks = _plan(store, experiment.runs, experiment.chunk)
+    (runs,) = sweep_all([(experiment, out_dir)], workers=workers, scheduler=scheduler,
+                        dask_local=dask_local, progress=progress)
+    return runs
+
+
+def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | None = None,
+              scheduler: str | None = None, dask_local: bool = False, progress: bool = True,
+              on_runs: Callable[[int], None] | None = None,
+              pool: Workers | None = None) -> list[pd.DataFrame]:
+    """Sweep several experiments, each into its own folder, with one set of workers.
+
+    The same as :func:`sweep` for each ``(experiment, out_dir)`` of ``jobs``, but their tasks
+    share the workers: ``pool`` (from :func:`start_workers`, kept by the caller across
+    calls), or workers started for this call as ``workers``, ``scheduler`` and ``dask_local``
+    say. ``on_runs(k)`` is called whenever ``k`` more runs are stored. Returns the runs of
+    each experiment, in the order of ``jobs``.
+    """
+    _check(workers, scheduler, dask_local)
+    with ExitStack() as stack:
+        stores = [stack.enter_context(storage.open_store(out_dir, experiment))
+                  for experiment, out_dir in jobs]
+        tasks = [task for store, (experiment, _) in zip(stores, jobs, strict=True)
+                 for task in _plan(store, experiment.runs, experiment.chunk)]
         if tasks:
-            n = min(workers or os.cpu_count() or 1, len(tasks))
-            results = (_pool(tasks, experiment.seed, n) if scheduler is None and not dask_local
-                       else _dask(tasks, experiment.seed, scheduler, n))
-            total = experiment.runs * len(store.points)
-            with _progress_bar(progress and sys.stdout.isatty()) as bar, closing(results):
-                job = bar.add_task(experiment.name, total=total,
+            if pool is None:
+                local = min(workers or os.cpu_count() or 1, len(tasks))
+                pool = stack.enter_context(start_workers(
+                    None if scheduler is not None else local, scheduler=scheduler,
+                    dask_local=dask_local))
+            total = sum(experiment.runs * len(store.points)
+                        for store, (experiment, _) in zip(stores, jobs, strict=True))
+            name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
+            with _progress_bar(progress and sys.stdout.isatty()) as bar, \
+                    closing(pool.results(tasks)) as results:
+                job = bar.add_task(name, total=total,
                                    completed=total - sum(len(t.runs) for t in tasks))
                 for task, table in results:
-                    store.write(task.point, task.runs, table)
+                    task.store.write(task.point, task.runs, table)
                     bar.advance(job, len(task.runs))
-        return store.frame(experiment.runs)
+                    if on_runs is not None:
+                        on_runs(len(task.runs))
+        return [store.frame(experiment.runs)
+                for store, (experiment, _) in zip(stores, jobs, strict=True)]

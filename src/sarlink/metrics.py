@@ -2,9 +2,10 @@
 
 A run records when things happened (detection, notification, cumulative reachability), not
 whether they happened by one ``t_d``, so every ``t_d`` up to the horizon is read from the same
-runs (docs/model.md, Records and metrics). Probabilities come with 95% Wilson score intervals,
-means with standard errors. Everything is computed on whole columns: group ids from pandas, sums per
-group with ``np.bincount``.
+runs (docs/model.md, "Records and metrics"). Probabilities come with 95% Wilson score
+intervals, means with standard errors. Everything is computed on whole columns: group ids from
+pandas, sums per group with ``np.bincount``. :data:`MEASURES` says how each measure is named
+and printed, for the command line, the figures and the report alike.
 
 The input is a table of runs as :func:`sarlink.load` returns it. The columns used are
 ``t_detect``, ``t_notify`` (NaN when the event did not happen) and ``immediate``, and for
@@ -14,14 +15,17 @@ were recorded at, as the engine stored them (``horizon`` and ``checkpoint`` grou
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from sarlink.config import param_groups
 
-__all__ = ["Z95", "success_curve", "summarize", "varying_params", "wilson"]
+__all__ = ["MEASURES", "Z95", "Measure", "format_interval", "format_mean", "success_curve",
+           "summarize", "varying_params", "wilson"]
 
 Z95 = 1.959963984540054
 """The standard normal quantile of 0.975: two-sided 95% intervals."""
@@ -46,6 +50,67 @@ def wilson(successes: np.ndarray | float, trials: np.ndarray | float,
     lo = np.where(k == 0, 0.0, centre - half)
     hi = np.where(k == n, 1.0, centre + half)
     return np.where(n > 0, lo, np.nan), np.where(n > 0, hi, np.nan)
+
+
+def format_interval(value: float, lo: float, hi: float, digits: int = 3) -> str:
+    """``0.532 [0.501, 0.563]``: an estimate with its interval; ``–`` when there is none."""
+    if np.isnan(value):
+        return "–"
+    return f"{value:.{digits}f} [{lo:.{digits}f}, {hi:.{digits}f}]"
+
+
+def format_mean(value: float, se: float, digits: int = 3) -> str:
+    """``1234 ± 12``: a mean with its standard error (just the mean when the error is NaN)."""
+    if np.isnan(value):
+        return "–"
+    return f"{value:.{digits}f}" + ("" if np.isnan(se) else f" ± {se:.{digits}f}")
+
+
+@dataclass(frozen=True)
+class Measure:
+    """One of :func:`summarize`'s measures: its column, name, kind and how it is printed.
+
+    The one definition the command line, the figures and the report format values with, so
+    that a number reads the same everywhere.
+    """
+
+    column: str
+    label: str
+    probability: bool
+    """A probability has ``_lo``/``_hi`` Wilson bounds; a mean has ``_se``."""
+    unit: str = ""
+    symbol: str = ""
+    """The paper's symbol, as TeX without the dollars (``P_s``)."""
+    share_of_td: bool = False
+    """A fraction of t_d (drawn as a percentage)."""
+    digits: int = 3
+
+    def interval(self, row: Mapping[str, Any]) -> tuple[float, float, float]:
+        """Value and 95% interval: Wilson for a probability, ± 1.96 standard errors for a mean."""
+        value = float(row[self.column])
+        if self.probability:
+            return value, float(row[f"{self.column}_lo"]), float(row[f"{self.column}_hi"])
+        half = Z95 * float(row[f"{self.column}_se"])
+        return value, value - half, value + half
+
+    def text(self, row: Mapping[str, Any]) -> str:
+        """The value as printed: with its 95% interval (probability) or standard error (mean)."""
+        if self.probability:
+            return format_interval(*self.interval(row), self.digits)
+        return format_mean(float(row[self.column]), float(row[f"{self.column}_se"]),
+                           self.digits)
+
+
+MEASURES = {m.column: m for m in (
+    Measure("P_s", "mission success", True, symbol="P_s"),
+    Measure("P_d", "detection probability", True, symbol="P_d"),
+    Measure("immediate", "immediate notification", True),
+    Measure("mission_time", "mission time", False, "s", digits=0),
+    Measure("search_share", "search share of mission time", False),
+    Measure("reachability", "target reachability", False, share_of_td=True),
+    Measure("connected", "drones connected", False),
+)}
+"""The measures of :func:`summarize`, by column."""
 
 
 def varying_params(df: pd.DataFrame) -> list[str]:

@@ -216,15 +216,18 @@ class Store:
     def missing(self, point: Point, runs: int) -> list[range]:
         """The run ranges of ``0 .. runs-1`` that ``point`` has no valid file for.
 
-        Unusable files are deleted (with a warning) so that their runs are done again.
+        Unusable files are moved aside to ``<name>.damaged`` (with a warning) so that their
+        runs are done again and nothing is deleted.
         """
         kept: _Stored = []
         gaps, start = [], 0
         for path, span, result in _scan(self.root / "points" / point.hash, point.hash,
                                         self.seed):
             if isinstance(result, str):
-                warnings.warn(f"{path} is redone: {result}", stacklevel=2)
-                path.unlink()
+                aside = path.with_name(path.name + ".damaged")
+                warnings.warn(f"{path} is redone: {result}; the file is moved to {aside.name}",
+                              stacklevel=2)
+                path.replace(aside)
                 continue
             kept.append((span, result))
             if span.start > start:
@@ -267,7 +270,8 @@ def _locked(root: Path) -> Iterator[None]:
             try:
                 fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
             except BlockingIOError:
-                raise ConfigError(f"{root} is being written by another sweep") from None
+                raise ConfigError(f"{root} is being written by another sweep; wait for it to "
+                                  "finish or choose another output folder") from None
         yield
 
 
@@ -286,6 +290,9 @@ def open_store(out_dir: str | Path, experiment: Experiment) -> Iterator[Store]:
     manifest is updated.
     """
     root = Path(out_dir)
+    for folder in (root, root / "points"):
+        if folder.exists() and not folder.is_dir():
+            raise ConfigError(f"{folder} is a file, where sarlink keeps a folder of results")
     root.mkdir(parents=True, exist_ok=True)
     points = [Point(params, mission, mission_hash(mission))
               for params, mission in experiment.points()]
@@ -321,13 +328,39 @@ def read_manifest(out_dir: str | Path) -> dict[str, Any]:
     if not path.exists():
         raise FileNotFoundError(f"{out_dir} is not a sarlink results folder (no {MANIFEST})")
     try:
-        manifest: dict[str, Any] = json.loads(path.read_text())
-    except ValueError as exc:
-        raise ConfigError(f"{path} is damaged: {exc}") from None
-    if manifest.get("format") != FORMAT:
-        raise ConfigError(f"{path} has layout format {manifest.get('format')}, "
-                          f"this sarlink reads format {FORMAT}")
-    return manifest
+        manifest = json.loads(path.read_text())
+    except ValueError as exc:  # not JSON, or not UTF-8
+        raise ConfigError(f"{path} is damaged: {exc}; if the folder holds only this "
+                          "experiment's runs, delete the file and run its sweep again") from None
+    problem = _manifest_problem(manifest)
+    if problem is not None:
+        raise ConfigError(f"{path} {problem}")
+    return typing.cast(dict[str, Any], manifest)
+
+
+def _manifest_problem(manifest: Any) -> str | None:
+    """Why ``manifest`` cannot be read by this sarlink, if it cannot."""
+    if not isinstance(manifest, dict):
+        return "is damaged: it holds no JSON object"
+    ours = version("sarlink")
+    theirs = manifest.get("sarlink", "an unknown version")
+    layout = manifest.get("format")
+    if isinstance(layout, int) and layout > FORMAT:
+        return (f"was written by sarlink {theirs} in layout format {layout}; this sarlink "
+                f"{ours} reads format {FORMAT}: upgrade sarlink to read it")
+    if layout != FORMAT:
+        return f"has layout format {layout}, this sarlink reads format {FORMAT}"
+    try:
+        Experiment.from_dict(manifest["experiment"])
+        if not isinstance(manifest["identity"], str):
+            raise TypeError("identity is not a string")
+        for point in manifest["points"]:
+            if not (isinstance(point["hash"], str) and isinstance(point["params"], dict)):
+                raise TypeError("a grid point has no hash or parameters")
+    except (ConfigError, KeyError, TypeError) as exc:
+        return (f"is damaged or was written by another sarlink ({theirs}; this is {ours}): "
+                f"{exc if not isinstance(exc, KeyError) else f'no {exc}'}")
+    return None
 
 
 def load(out_dir: str | Path) -> pd.DataFrame:

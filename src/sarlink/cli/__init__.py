@@ -1,8 +1,13 @@
 """The ``sarlink`` command line. Each command lives in a module of its own."""
 
+from typing import Annotated
+
 import typer
 
+from sarlink.cli.design import design
+from sarlink.cli.errors import Guarded
 from sarlink.cli.plan import plan
+from sarlink.cli.replay import replay
 from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
 from sarlink.cli.summarize import summarize
@@ -14,14 +19,21 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    cls=Guarded,
 )
 app.command()(simulate)
 app.command()(plan)
 app.command()(sweep)
 app.command()(summarize)
 app.command()(reproduce)
+app.command()(replay)
+app.command()(design)
 
 
 @app.callback()
-def main() -> None:
+def main(
+    debug: Annotated[bool, typer.Option(
+        "--debug", help="show the traceback of an unexpected error (also SARLINK_DEBUG=1)")
+    ] = False,
+) -> None:
     """Plan and simulate search-and-rescue drone teams that must notify their base station."""

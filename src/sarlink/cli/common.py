@@ -1,38 +1,81 @@
-"""Helpers shared by the CLI commands: mission assembly and error reporting."""
+"""Helpers shared by the CLI commands: mission assembly, output paths, JSON."""
 
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
-from contextlib import contextmanager
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import typer
 from rich.console import Console
 
-from sarlink.config import ConfigError, Mission
+from sarlink.cli.errors import err_console, user_errors
+from sarlink.config import ConfigError, Mission, param_groups
+
+__all__ = ["build_mission", "console", "err_console", "output_folder", "plot_file",
+           "print_json", "user_errors"]
 
 console = Console()
-err_console = Console(stderr=True, soft_wrap=True)
-"""Errors stay one line each, also when stderr is a pipe or a log (rich would wrap at 80)."""
 
 
-@contextmanager
-def user_errors() -> Iterator[None]:
-    """Report configuration mistakes as one line and exit with status 2, no traceback."""
-    try:
-        yield
-    except (ConfigError, KeyError, FileNotFoundError) as exc:
-        message = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
-        err_console.print(f"[bold red]error:[/] {message}", highlight=False)
-        raise typer.Exit(2) from None
+def build_mission(config: Path | None, flags: Mapping[str, str] | None = None,
+                  **overrides: Any) -> Mission:
+    """The mission of a TOML file (or the paper's defaults) with the given flags applied.
 
-
-def build_mission(config: Path | None, **overrides: Any) -> Mission:
-    """The mission of a TOML file (or the paper's defaults) with the given flags applied."""
+    ``overrides`` are flat mission parameters; an error about one names the option the user
+    typed: ``--param-name`` by default, or ``flags[param]`` (``{"horizon": "--td"}``).
+    """
     base = Mission.from_toml(config) if config is not None else Mission()
-    return base.replace(**{k: v for k, v in overrides.items() if v is not None})
+    given = {name: value for name, value in overrides.items() if value is not None}
+    try:
+        return base.replace(**given)
+    except ConfigError as exc:
+        message, groups = str(exc), param_groups()
+        for name in given:
+            flag = (flags or {}).get(name, "--" + name.replace("_", "-"))
+            dotted = f"{groups[name]}.{name}"
+            message = message.replace(dotted, f"{flag} ({dotted})")
+        raise ConfigError(message) from None
+
+
+def output_folder(path: Path, option: str) -> Path:
+    """``path`` as a folder to write into, created if missing; a :class:`ConfigError` names
+    ``option`` if it cannot be one."""
+    if path.exists() and not path.is_dir():
+        raise ConfigError(f"{option} {path} is a file; a folder is expected (a new one is "
+                          "created)")
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ConfigError(f"{option} {path}: cannot create the folder ({exc.strerror})") from None
+    return path
+
+
+def plot_file(path: Path | None, option: str = "--plot") -> Path | None:
+    """Check a figure's path before any work is done: its folder exists, it is not a folder,
+    and matplotlib knows its format (the suffix)."""
+    if path is None:
+        return None
+    from matplotlib.figure import Figure
+
+    formats = Figure().canvas.get_supported_filetypes()
+    suffix = path.suffix.removeprefix(".").lower()
+    if suffix not in formats:
+        raise ConfigError(f"{option} {path}: the file name must end in a figure format, one of "
+                          f".{', .'.join(sorted(formats))}")
+    return output_file(path, option)
+
+
+def output_file(path: Path | None, option: str) -> Path | None:
+    """Check a file to write before any work is done: not a folder, in a folder that exists."""
+    if path is None:
+        return None
+    if path.is_dir():
+        raise ConfigError(f"{option} {path} is a folder; a file name is expected")
+    if not path.parent.is_dir():
+        raise ConfigError(f"{option} {path}: the folder {path.parent} does not exist")
+    return path
 
 
 def print_json(data: dict[str, Any]) -> None:

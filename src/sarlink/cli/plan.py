@@ -8,8 +8,22 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-from sarlink.cli.common import build_mission, console, print_json, user_errors
-from sarlink.mtsp import plan_for
+from sarlink.cli.common import build_mission, console, plot_file, print_json, user_errors
+from sarlink.config import Mission
+from sarlink.mtsp import MtspPlan, plan_for
+
+
+def _save_plot(result: MtspPlan, mission: Mission, path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    from sarlink.plots import plot_plan
+
+    fig, ax = plt.subplots(figsize=(9, 7), layout="constrained")
+    try:
+        plot_plan(result, ax, size=mission.area.size, r=mission.sensing.r)
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
 
 
 def plan(
@@ -19,7 +33,7 @@ def plan(
         help="minsum (total distance, the paper's) or minmax (longest tour)")] = None,
     min_cells: Annotated[int | None, typer.Option(
         help="minimum cells per drone (default floor(cells / drones))")] = None,
-    seed: Annotated[int | None, typer.Option(help="seed of the GA")] = None,
+    seed: Annotated[int | None, typer.Option(help="seed of the GA", min=0)] = None,
     size: Annotated[float | None, typer.Option(help="side a of the area, m")] = None,
     r: Annotated[float | None, typer.Option(help="sensing range r = cell side, m")] = None,
     speed: Annotated[float | None, typer.Option(help="flight speed V_m, m/s")] = None,
@@ -34,12 +48,15 @@ def plan(
     Plans are cached on disk (see docs/mtsp.md), so asking twice costs nothing.
     """
     with user_errors():
+        plot_file(plot)
         mission = build_mission(
-            config, drones=drones, solver=solver, objective=objective, min_cells=min_cells,
-            plan_seed=seed, size=size, r=r, speed=speed, population=population,
+            config, {"plan_seed": "--seed"}, drones=drones, solver=solver, objective=objective,
+            min_cells=min_cells, plan_seed=seed, size=size, r=r, speed=speed, population=population,
             iterations=iterations,
         )
         result = plan_for(mission, mission.team.drones)
+        if plot is not None:
+            _save_plot(result, mission, plot)
     v = mission.team.speed
     out: dict[str, Any] = {
         "drones": len(result.tours),
@@ -58,15 +75,6 @@ def plan(
         "longest_time": result.longest / v,
         "solve_seconds": result.seconds,
     }
-    if plot is not None:
-        import matplotlib.pyplot as plt
-
-        from sarlink.plots import plot_plan
-
-        fig, ax = plt.subplots(figsize=(9, 7), layout="constrained")
-        plot_plan(result, ax, size=mission.area.size, r=mission.sensing.r)
-        fig.savefig(plot, dpi=150)
-        plt.close(fig)
     if json:
         print_json(out)
         return

@@ -7,8 +7,9 @@ from typing import Annotated
 
 import typer
 
-from sarlink.cli.common import console, user_errors
+from sarlink.cli.common import console, output_folder, user_errors
 from sarlink.config import ConfigError
+from sarlink.config.experiment import MAX_WORKERS
 
 
 def _numbers(text: str | None) -> list[int] | None:
@@ -31,25 +32,27 @@ def reproduce(
     figures: Annotated[str | None, typer.Option(
         help="paper figures to reproduce, e.g. 1,3,7; default all")] = None,
     workers: Annotated[int | None, typer.Option(
-        help="local worker processes; default one per core")] = None,
+        help="local worker processes; default one per core", min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="address of a running Dask scheduler, tcp://host:port")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bars")] = False,
 ) -> None:
     """Rerun the experiments behind the paper's Figs. 1-7, draw them and report which of the
-    paper's findings hold; an interrupted reproduction resumes where it stopped."""
+    paper's claims hold, are contradicted or stay undecided; an interrupted reproduction
+    resumes where it stopped."""
     import matplotlib
 
     matplotlib.use("Agg")  # files only, never a window
 
     from sarlink.paper import reproduce as run_reproduction
+    from sarlink.paper.findings import tally
 
     with user_errors():
-        result = run_reproduction(out, runs=runs, quick=quick, figures=_numbers(figures),
+        folder = output_folder(out, "--out")  # plan_times.json goes straight into it
+        result = run_reproduction(folder, runs=runs, quick=quick, figures=_numbers(figures),
                                   workers=workers, scheduler=scheduler, progress=not quiet)
-    held = sum(f.holds for f in result.findings)
-    findings = (f"{held} of {len(result.findings)} of the paper's findings hold"
-                if result.findings else "findings not checked (they need Figs. 2-6)")
+    findings = (f"{len(result.findings)} of the paper's claims checked: "
+                f"{tally(result.findings)}" if result.findings else "no claims checked")
     console.print(f"report: {result.report_html} and {result.report_md} "
                   f"({result.runs} runs per point, {result.seconds:.0f} s); {findings}",
                   highlight=False, soft_wrap=True)

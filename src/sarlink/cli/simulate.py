@@ -9,8 +9,19 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-from sarlink.cli.common import build_mission, console, print_json, user_errors
+from sarlink.cli import options
+from sarlink.cli.common import (
+    build_mission,
+    console,
+    output_file,
+    plot_file,
+    print_json,
+    user_errors,
+)
+from sarlink.config import Mission
 from sarlink.planners import get_planner
+from sarlink.playback import replay
+from sarlink.result import RunResult
 from sarlink.simulation import simulate as run_simulation
 
 
@@ -18,34 +29,57 @@ def _finite_or_none(value: float) -> float | None:
     return value if math.isfinite(value) else None
 
 
+def _save_plot(result: RunResult, mission: Mission, path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    from sarlink.plots import plot_run
+
+    fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
+    try:
+        plot_run(result, mission, ax=ax)
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+
+
 def simulate(
     planner: Annotated[str | None, typer.Option(help="covb, conb, concov, mtsp, mtsp-conb")] = None,
-    drones: Annotated[int | None, typer.Option(help="number of drones N_m")] = None,
-    rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
-    seed: Annotated[int, typer.Option(help="experiment seed")] = 0,
-    run: Annotated[int, typer.Option(help="run index within the experiment")] = 0,
-    alpha: Annotated[float | None, typer.Option(help="ConCov coverage weight")] = None,
-    nr: Annotated[int | None, typer.Option(help="mTSP-ConB: drones flying the plan")] = None,
-    td: Annotated[float | None, typer.Option(help="target duration t_d = horizon, s")] = None,
-    r: Annotated[float | None, typer.Option(help="sensing range r, m")] = None,
-    p_miss: Annotated[float | None, typer.Option(help="miss probability per look")] = None,
-    look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
-    shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
-    pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
-    stop: Annotated[str | None, typer.Option(help="end the run at: horizon, detected, notified")
-                    ] = None,
-    config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
+    drones: options.Drones = None,
+    rc: options.Rc = None,
+    seed: options.Seed = 0,
+    run: options.Run = 0,
+    alpha: options.Alpha = None,
+    nr: options.Nr = None,
+    td: options.Td = None,
+    r: options.R = None,
+    p_miss: options.PMiss = None,
+    look: options.Look = None,
+    shadowing_sigma: options.Sigma = None,
+    pathloss_exponent: options.PathlossExponent = None,
+    stop: options.Stop = None,
+    config: options.Config = None,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
+    html: Annotated[Path | None, typer.Option(
+        help="write an interactive replay of the run here (one HTML file, works offline)")
+    ] = None,
 ) -> None:
     """Simulate one mission run and report detection, notification and reachability."""
     with user_errors():
+        plot_file(plot)
+        output_file(html, "--html")
         mission = build_mission(
-            config, planner=planner, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
+            config, {"horizon": "--td", "sigma": "--shadowing-sigma"}, planner=planner,
+            drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
             p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
             stop=stop,
         )
-        result = run_simulation(mission, seed=seed, run=run, trajectory=plot is not None)
+        result = run_simulation(mission, seed=seed, run=run,
+                                trajectory=plot is not None or html is not None)
+        if plot is not None:
+            _save_plot(result, mission, plot)
+        if html is not None:
+            replay(result, mission).write(html)
     out: dict[str, Any] = {
         "planner": mission.team.planner,
         "drones": mission.team.drones,
@@ -62,15 +96,6 @@ def simulate(
         "t_reachable": _finite_or_none(result.t_reachable()),
         "connected_fraction": _finite_or_none(result.connected_fraction()),
     }
-    if plot is not None:
-        import matplotlib.pyplot as plt
-
-        from sarlink.plots import plot_run
-
-        fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
-        plot_run(result, mission, ax=ax)
-        fig.savefig(plot, dpi=150)
-        plt.close(fig)
     if json:
         print_json(out)
         return
@@ -97,3 +122,5 @@ def simulate(
     console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")
+    if html is not None:
+        console.print(f"replay written to {html}: open it in a browser")

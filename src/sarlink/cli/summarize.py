@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.table import Table
@@ -17,31 +16,23 @@ if TYPE_CHECKING:
     import pandas as pd
 
 
-def _probability(row: Any, name: str) -> str:
-    p = row[name]
-    return "–" if math.isnan(p) else f"{p:.3f} [{row[name + '_lo']:.3f}, {row[name + '_hi']:.3f}]"
-
-
-def _mean(row: Any, name: str, digits: int) -> str:
-    m, se = row[name], row[name + "_se"]
-    if math.isnan(m):
-        return "–"
-    return f"{m:.{digits}f}" + ("" if math.isnan(se) else f" ± {se:.{digits}f}")
-
-
-_MEASURES: list[tuple[str, Callable[[Any], str]]] = [
-    ("mission success P_s", lambda r: _probability(r, "P_s")),
-    ("detection P_d", lambda r: _probability(r, "P_d")),
-    ("immediate notification", lambda r: _probability(r, "immediate")),
-    ("mission time (s)", lambda r: _mean(r, "mission_time", 0)),
-    ("search share", lambda r: _mean(r, "search_share", 3)),
-    ("target reachability", lambda r: _mean(r, "reachability", 3)),
-    ("drones connected", lambda r: _mean(r, "connected", 3)),
+_MEASURES: list[tuple[str, str]] = [
+    ("mission success P_s", "P_s"),
+    ("detection P_d", "P_d"),
+    ("immediate notification", "immediate"),
+    ("mission time (s)", "mission_time"),
+    ("search share", "search_share"),
+    ("target reachability", "reachability"),
+    ("drones connected", "connected"),
 ]
+"""Row label and column of each measure printed, formatted as :data:`sarlink.metrics.MEASURES`
+says."""
 
 
 def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
     """One table per grid point: a row per measure, a column per t_d."""
+    from sarlink.metrics import MEASURES
+
     for start in range(0, len(table), per_group):
         rows = table.iloc[start:start + per_group]
         first = rows.iloc[0]
@@ -50,8 +41,9 @@ def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
         out.add_column("measure")
         for td in rows["td"]:
             out.add_column(f"t_d = {td:g} s", justify="right")
-        for label, cell in _MEASURES:
-            out.add_row(label, *(cell(row) for _, row in rows.iterrows()))
+        for label, column in _MEASURES:
+            measure = MEASURES[column]
+            out.add_row(label, *(measure.text(row) for _, row in rows.iterrows()))
         console.print(out)
 
 
@@ -69,6 +61,9 @@ def summarize(
     with user_errors():
         if csv and json:
             raise ConfigError("choose one of --csv and --json")
+        for t in td or []:
+            if not (math.isfinite(t) and t > 0):
+                raise ConfigError(f"--td must be a finite number of seconds > 0, got {t:g}")
         by = list(read_manifest(results)["experiment"]["grid"])
         try:
             table = summarize_runs(load(results), td=td, by=by)

@@ -7,14 +7,16 @@ from typing import Annotated
 
 import typer
 
-from sarlink.cli.common import console, user_errors
+from sarlink.cli.common import console, output_folder, user_errors
+from sarlink.config.experiment import MAX_WORKERS
 
 
 def sweep(
     experiment: Annotated[Path, typer.Argument(help="experiment TOML file")],
     out: Annotated[Path, typer.Option("--out", "-o", help="results folder, created or resumed")],
     workers: Annotated[int | None, typer.Option(
-        help="worker processes (local pool or --dask-local); default: one per core")] = None,
+        help="worker processes (local pool or --dask-local); default: one per core",
+        min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="address of a running Dask scheduler, tcp://host:port")] = None,
     dask_local: Annotated[bool, typer.Option(
@@ -27,8 +29,8 @@ def sweep(
 
     with user_errors():
         exp = Experiment.from_toml(experiment)
-        runs = run_sweep(exp, out, workers=workers, scheduler=scheduler, dask_local=dask_local,
-                         progress=not quiet)
+        runs = run_sweep(exp, output_folder(out, "--out"), workers=workers, scheduler=scheduler,
+                         dask_local=dask_local, progress=not quiet)
     if not quiet:
         console.print(f"{len(runs)} runs of {runs['point'].nunique()} grid points in {out}; "
                       f"see them with `sarlink summarize {out}`", highlight=False)

@@ -11,14 +11,25 @@ from __future__ import annotations
 
 import hashlib
 import itertools
+import math
+from pathlib import Path
 from typing import Any, Self
 
 from pydantic import Field, field_validator, model_validator
 
-from sarlink.config.base import Checked, ConfigError
+from sarlink.config.base import Checked, ConfigError, read_toml
 from sarlink.config.mission import Mission, param_groups
 
-__all__ = ["Experiment", "mission_hash"]
+__all__ = ["MAX_POINTS", "MAX_RUNS", "MAX_WORKERS", "Experiment", "mission_hash"]
+
+MAX_POINTS = 100_000
+"""Most grid points in one experiment: each is a folder of files and a line of the manifest."""
+MAX_WORKERS = 1024
+"""Most local worker processes: more than the cores only adds overhead, and each process is
+a Python interpreter with its own memory."""
+MAX_RUNS = 1_000_000_000
+"""Most runs per grid point (run indices are stored as 64-bit integers, and even a fast run
+takes a millisecond)."""
 
 
 def mission_hash(mission: Mission) -> str:
@@ -35,17 +46,29 @@ class Experiment(Checked):
 
     ``grid`` maps flat mission parameters (``planner``, ``drones``, ``rc``, ``p_miss``, ...; see
     :meth:`Mission.params`) to the values to try; the grid points are their cartesian product.
-    ``Experiment.from_toml`` reads ``name``, ``seed``, ``runs``, ``chunk``, ``[mission.*]``
-    (the tables of :class:`Mission`) and ``[grid]``.
+    ``Experiment.from_toml`` reads ``name`` (default: the file's name without ``.toml``),
+    ``seed``, ``runs``, ``chunk``, ``[mission.*]`` (the tables of :class:`Mission`) and
+    ``[grid]``.
     """
 
-    name: str = Field(min_length=1, description="a name for people; not part of the identity")
-    seed: int = Field(ge=0, description="the one seed of every run of every grid point")
-    runs: int = Field(ge=1, description="runs per grid point, indices 0 .. runs-1")
-    chunk: int = Field(100, ge=1, description="runs per task; results do not depend on it")
+    name: str = Field("experiment", min_length=1,
+                      description="a name for people; not part of the identity")
+    seed: int = Field(ge=0, le=2**63 - 1, strict=True,
+                      description="the one seed of every run of every grid point, an integer >= 0")
+    runs: int = Field(ge=1, le=MAX_RUNS, strict=True,
+                      description="runs per grid point, indices 0 .. runs-1, an integer >= 1")
+    chunk: int = Field(100, ge=1, le=MAX_RUNS, strict=True,
+                       description="runs per task; results do not depend on it")
     mission: Mission = Field(default_factory=Mission, description="the base mission")
     grid: dict[str, list[Any]] = Field(default_factory=dict,
                                        description="flat parameter -> values to try")
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> Self:
+        """Read an experiment file; without a ``name`` it is named after the file."""
+        data = read_toml(path)
+        data.setdefault("name", Path(path).stem or "experiment")
+        return cls.from_file_data(path, data)
 
     @field_validator("grid")
     @classmethod
@@ -57,6 +80,9 @@ class Experiment(Checked):
                                  f"known: {', '.join(sorted(known))}")
             if not values:
                 raise ValueError(f"{name!r} lists no values")
+        size = math.prod(len(values) for values in grid.values())
+        if size > MAX_POINTS:
+            raise ValueError(f"the grid has {size:,} points; at most {MAX_POINTS:,} are allowed")
         return grid
 
     @model_validator(mode="after")

@@ -18,7 +18,7 @@ __all__ = [
     "Area",
     "Channel",
     "Mission",
-    "Mtsp",
+    "MtspSettings",
     "Sensing",
     "Team",
     "Timing",
@@ -50,11 +50,12 @@ class Area(Checked):
 class Team(Checked):
     """The drones and the planner that steers them."""
 
-    drones: int = Field(10, ge=1, le=1000, description="number of drones N_m")
+    drones: int = Field(10, ge=1, le=1000, strict=True, description="number of drones N_m")
     speed: float = Field(5.0, gt=0, description="flight speed V_m, m/s")
     planner: str = Field("covb", description="planner name, see sarlink.planner_names()")
     alpha: float = Field(0.5, ge=0, le=1, description="ConCov weight of coverage (Eq. 12)")
-    nr: int = Field(6, ge=1, description="mTSP-ConB: drones reserved for the mTSP plan")
+    nr: int = Field(6, ge=1, strict=True,
+                    description="mTSP-ConB: drones reserved for the mTSP plan")
     flight_time: float = Field(4000.0, gt=0, description="flight budget T_max, s")
 
     @field_validator("planner")
@@ -111,8 +112,12 @@ class Timing(Checked):
     )
 
 
-class Mtsp(Checked):
-    """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings."""
+class MtspSettings(Checked):
+    """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings.
+
+    The ``[mtsp]`` table of a mission file; the planner that flies the plans is
+    :class:`sarlink.planners.mtsp.Mtsp`.
+    """
 
     solver: Literal["ga", "ortools"] = Field(
         "ga", description="ga: the paper's genetic algorithm; ortools: OR-Tools routing"
@@ -121,17 +126,25 @@ class Mtsp(Checked):
         "minsum", description="minsum: total distance (paper); minmax: longest tour"
     )
     min_cells: int | None = Field(
-        None, ge=1, description="minimum cells per drone; None means floor(cells / drones)"
+        None, ge=1, strict=True,
+        description="minimum cells per drone; None means floor(cells / drones)"
     )
-    population: int = Field(80, ge=8, description="GA population (rounded down to groups of 8)")
-    iterations: int = Field(5000, ge=1, description="GA iterations")
-    plan_seed: int = Field(0, ge=0, description="seed of the plan solver")
+    population: int = Field(80, ge=8, strict=True,
+                            description="GA population (rounded down to groups of 8)")
+    iterations: int = Field(5000, ge=1, strict=True, description="GA iterations")
+    plan_seed: int = Field(0, ge=0, le=2**63 - 1, strict=True,
+                           description="seed of the plan solver")
 
 
 def _multiple_of(value: float, dt: float) -> bool:
     ratio = value / dt
     return abs(ratio - round(ratio)) < 1e-9 * max(1.0, ratio) and round(ratio) >= 1
 
+
+MAX_STEPS = 10_000_000
+"""Most time steps in one run (the paper's runs have 4000): a run's arrays stay in memory."""
+MAX_RECORDS = 1_000_000
+"""Most cumulative records (checkpoints) in one run (the paper's runs have 81)."""
 
 _GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "mtsp")
 
@@ -147,7 +160,7 @@ class Mission(Checked):
     sensing: Sensing = Field(default_factory=Sensing)
     channel: Channel = Field(default_factory=Channel)
     timing: Timing = Field(default_factory=Timing)
-    mtsp: Mtsp = Field(default_factory=Mtsp)
+    mtsp: MtspSettings = Field(default_factory=MtspSettings)
 
     @model_validator(mode="after")
     def _consistent(self) -> Self:
@@ -159,6 +172,14 @@ class Mission(Checked):
             if not _multiple_of(value, t.dt):
                 raise ValueError(f"timing.{name} must be a multiple of timing.dt = {t.dt} s, "
                                  f"got {value}")
+        steps, records = t.horizon / t.dt, t.horizon / t.checkpoint
+        if steps > MAX_STEPS:
+            raise ValueError(f"timing.horizon / timing.dt must be at most {MAX_STEPS:,} steps, "
+                             f"got {t.horizon:g} s / {t.dt:g} s = {steps:,.0f}")
+        if records > MAX_RECORDS:
+            raise ValueError(f"timing.horizon / timing.checkpoint must be at most "
+                             f"{MAX_RECORDS:,} records, got {t.horizon:g} s / {t.checkpoint:g} s "
+                             f"= {records:,.0f}")
         coh = self.channel.coherence
         if coh is not None and not _multiple_of(coh, t.dt):
             raise ValueError(f"channel.coherence must be a multiple of timing.dt = {t.dt} s, "
@@ -221,6 +242,6 @@ def param_groups() -> dict[str, str]:
     """Flat parameter name -> the group that holds it."""
     models: dict[str, type[BaseModel]] = {
         "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "mtsp": Mtsp,
+        "mtsp": MtspSettings,
     }
     return {field: group for group, model in models.items() for field in model.model_fields}

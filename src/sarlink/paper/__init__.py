@@ -1,11 +1,13 @@
 """Reproduce the paper's evaluation: its experiments, figures, findings and a report.
 
-``reproduce(out)`` reruns what Figs. 1–7 need, draws them, checks the paper's findings against
-the results and writes ``out/report.md`` and ``out/report.html``; ``sarlink reproduce`` is its
-command.
+``reproduce(out)`` reruns what Figs. 1–7 need, draws them, checks the paper's claims against
+the results (:mod:`sarlink.paper.findings`) and writes ``out/report.md`` and
+``out/report.html``; ``sarlink reproduce`` is its command.
 """
 
-from sarlink.paper.findings import Finding, check_all
+from sarlink.paper.evidence import Outcome
+from sarlink.paper.findings import CLAIMS, Finding, Settings, check_all, tally
 from sarlink.paper.reproduce import ReproductionResult, reproduce
 
-__all__ = ["Finding", "ReproductionResult", "check_all", "reproduce"]
+__all__ = ["CLAIMS", "Finding", "Outcome", "ReproductionResult", "Settings", "check_all",
+           "reproduce", "tally"]

@@ -4,8 +4,9 @@ Every function takes the summary tables of :mod:`sarlink.paper.experiments` (and
 empty figure to draw into) and returns the figure, laid out like the paper's: one panel per
 communication range where the paper splits them, Fig. 2 with a row per team size. Every
 probability is drawn with its 95% Wilson interval as a band, every mean with a band of ± one
-standard error; each planner keeps one colour and marker throughout, and legends name the
-planners as the paper does. :data:`FIGURES` lists them with their captions, the tables they
+standard error. Every planner of the tables is drawn, in the registry's order (the paper's
+legend order) with the colour, marker and label it is registered with, so a new planner needs
+no edits here. :data:`FIGURES` lists them with their captions, the tables they
 need and the table of values they plot, which the report prints beside each figure.
 """
 
@@ -15,7 +16,7 @@ from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal, NamedTuple
+from typing import Literal
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -25,87 +26,56 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.ticker import PercentFormatter
 
+from sarlink.metrics import MEASURES, Measure
 from sarlink.paper.experiments import (
     DRONES,
     FIG2_DRONES,
     FIG5_RANGES,
-    PLAN_TIME_PLANNERS,
-    PLANNERS,
     RANGES,
     SIGMA,
     TD_FIG3,
     TD_LONG,
     TD_SHORT,
 )
-from sarlink.planners import get_planner
+from sarlink.planners import get_planner, planner_names
 
 __all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
            "save"]
 
-STYLE = {
-    "mtsp": ("#1f77b4", "o"),
-    "covb": ("#ff7f0e", "s"),
-    "conb": ("#2ca02c", "^"),
-    "mtsp-conb": ("#d62728", "D"),
-    "concov": ("#9467bd", "v"),
-}
-"""Colour and marker of each planner, the same in every figure."""
-
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
 
-
-class Metric(NamedTuple):
-    """A measure of the summary tables and how it is labelled and bounded."""
-
-    column: str
-    label: str
-    probability: bool
-    """A probability has ``_lo``/``_hi`` Wilson bounds; a mean has ``_se``."""
-    unit: str = ""
-    symbol: str = ""
-    """The paper's symbol, as TeX without the dollars (``P_s``)."""
-    share_of_td: bool = False
-    """A fraction of t_d, drawn as a percentage."""
-
-    def bounds(self, rows: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Value, lower and upper edge of the band: the 95% interval or ± one standard error."""
-        value = rows[self.column].to_numpy(dtype=float)
-        if self.probability:
-            return (value, rows[f"{self.column}_lo"].to_numpy(dtype=float),
-                    rows[f"{self.column}_hi"].to_numpy(dtype=float))
-        se = rows[f"{self.column}_se"].to_numpy(dtype=float)
-        return value, value - se, value + se
-
-    def text(self, row: pd.Series) -> str:
-        """``0.532 [0.501, 0.563]`` (95% interval) or ``1234.5 ± 12.3`` (standard error)."""
-        if self.probability:
-            p, lo, hi = (row[f"{self.column}{s}"] for s in ("", "_lo", "_hi"))
-            return "–" if np.isnan(p) else f"{p:.3f} [{lo:.3f}, {hi:.3f}]"
-        m, se = row[self.column], row[f"{self.column}_se"]
-        digits = 1 if self.unit == "s" else 3
-        return "–" if np.isnan(m) else f"{m:.{digits}f} ± {se:.{digits}f}"
-
-    @property
-    def axis(self) -> str:
-        symbol = f" ${self.symbol}$" if self.symbol else ""
-        unit = " (% of $t_d$)" if self.share_of_td else f" ({self.unit})" if self.unit else ""
-        return self.label + symbol + unit
-
-    @property
-    def header(self) -> str:
-        symbol = f" {self.symbol}" if self.symbol else ""
-        unit = " (fraction of t_d)" if self.share_of_td else f" ({self.unit})" if self.unit else ""
-        return (self.label + symbol + unit
-                + (" [95% interval]" if self.probability else " ± SE"))
+P_S, P_D, IMMEDIATE, MISSION_TIME, SEARCH_SHARE, REACHABILITY = (
+    MEASURES[c] for c in ("P_s", "P_d", "immediate", "mission_time", "search_share",
+                          "reachability"))
 
 
-P_S = Metric("P_s", "mission success", True, symbol="P_s")
-P_D = Metric("P_d", "detection probability", True, symbol="P_d")
-IMMEDIATE = Metric("immediate", "immediate notification", True)
-MISSION_TIME = Metric("mission_time", "mission time", False, "s")
-SEARCH_SHARE = Metric("search_share", "search share of mission time", False)
-REACHABILITY = Metric("reachability", "target reachability", False, share_of_td=True)
+def _band(measure: Measure, rows: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Value, lower and upper edge of the band: the 95% interval or ± one standard error."""
+    value = rows[measure.column].to_numpy(dtype=float)
+    if measure.probability:
+        return (value, rows[f"{measure.column}_lo"].to_numpy(dtype=float),
+                rows[f"{measure.column}_hi"].to_numpy(dtype=float))
+    se = rows[f"{measure.column}_se"].to_numpy(dtype=float)
+    return value, value - se, value + se
+
+
+def _axis(measure: Measure) -> str:
+    """The axis label: name, the paper's symbol in TeX, unit."""
+    symbol = f" ${measure.symbol}$" if measure.symbol else ""
+    unit = (" (% of $t_d$)" if measure.share_of_td
+            else f" ({measure.unit})" if measure.unit else "")
+    return measure.label + symbol + unit
+
+
+def _header(measure: Measure) -> str:
+    """The column header of the plotted values."""
+    symbol = f" {measure.symbol}" if measure.symbol else ""
+    unit = (" (fraction of t_d)" if measure.share_of_td
+            else f" ({measure.unit})" if measure.unit else "")
+    return (measure.label + symbol + unit
+            + (" [95% interval]" if measure.probability else " ± SE"))
+
 
 _KEYS = {"rc": "r_c (m)", "drones": "N_m", "td": "t_d (s)", "p_miss": "p_miss",
          "planner": "planner"}
@@ -116,10 +86,16 @@ def _label(planner: str) -> str:
 
 
 def _legend_order(column: pd.Series) -> pd.Series:
-    """A sort key that puts planners in the order of the paper's legends."""
+    """A sort key that puts planners in the registry's order (the paper's legend order)."""
     if column.name != "planner":
         return column
-    return column.map({p: i for i, p in enumerate(PLANNERS)})
+    return column.map({p: i for i, p in enumerate(planner_names())})
+
+
+def _planners(*tables: pd.DataFrame) -> list[str]:
+    """The planners found in ``tables``, in the registry's order."""
+    found = set().union(*(t["planner"].unique() for t in tables))
+    return [p for p in planner_names() if p in found]
 
 
 @contextmanager
@@ -141,44 +117,46 @@ def _axes(fig: Figure | None, rows: int, cols: int, *,
     return fig, fig.subplots(rows, cols, squeeze=False, sharey=sharey)
 
 
-def _legend(fig: Figure, planners: Sequence[str] = PLANNERS) -> None:
-    """One legend for the whole figure, planners in the paper's order."""
-    handles = [Line2D([], [], color=STYLE[p][0], marker=STYLE[p][1]) for p in planners]
+def _legend(fig: Figure, planners: Sequence[str]) -> None:
+    """One legend for the whole figure, planners in the registry's order."""
+    handles = [Line2D([], [], color=get_planner(p).colour, marker=get_planner(p).marker)
+               for p in planners]
     fig.legend(handles, [_label(p) for p in planners], loc="outside upper center",
                ncols=len(planners), frameon=False)
 
 
-def _lines(ax: Axes, rows: pd.DataFrame, x: str, metric: Metric, *, dodge: float = 0.0,
-           markevery: int = 1) -> None:
-    """One line per planner of ``metric`` against column ``x``, with its band.
+def _lines(ax: Axes, rows: pd.DataFrame, x: str, measure: Measure, planners: Sequence[str], *,
+           dodge: float = 0.0, markevery: int = 1) -> None:
+    """One line per planner of ``measure`` against column ``x``, with its band.
 
     Planners often coincide (all at P = 1; mTSP-ConB on mTSP up to N_r drones). So that none
     hides another, ``dodge`` shifts each planner's points sideways by that much per place in
-    the legend, and with ``markevery`` > 1 each planner marks a different subset of points.
+    ``planners`` (the figure's legend), and with ``markevery`` > 1 each planner marks a
+    different subset of points.
     """
-    middle = (len(PLANNERS) - 1) / 2
-    for i, planner in enumerate(PLANNERS):
+    middle = (len(planners) - 1) / 2
+    for i, planner in enumerate(planners):
         sub = rows[rows["planner"] == planner].sort_values(x)
         if sub.empty:
             continue
-        colour, marker = STYLE[planner]
+        style = get_planner(planner)
         xs = sub[x].to_numpy(dtype=float) + dodge * (i - middle)
-        value, lo, hi = metric.bounds(sub)
-        ax.plot(xs, value, color=colour, marker=marker, markevery=(i % markevery, markevery),
-                label=_label(planner))
-        ax.fill_between(xs, lo, hi, color=colour, alpha=_BAND, lw=0)
-    if metric.probability or metric.share_of_td:
+        value, lo, hi = _band(measure, sub)
+        ax.plot(xs, value, color=style.colour, marker=style.marker,
+                markevery=(i % markevery, markevery), label=style.label)
+        ax.fill_between(xs, lo, hi, color=style.colour, alpha=_BAND, lw=0)
+    if measure.probability or measure.share_of_td:
         ax.set_ylim(-0.02, 1.02)
-    if metric.share_of_td:
+    if measure.share_of_td:
         ax.yaxis.set_major_formatter(PercentFormatter(xmax=1.0, decimals=0))
-    ax.set_ylabel(metric.axis)
+    ax.set_ylabel(_axis(measure))
 
 
-def _versus_drones(axes: Sequence[Axes], rows: pd.DataFrame, metric: Metric,
-                   ranges: Sequence[float]) -> None:
-    """The metric against N_m, one panel per communication range: Figs. 3–6 and 7b."""
+def _versus_drones(axes: Sequence[Axes], rows: pd.DataFrame, measure: Measure,
+                   ranges: Sequence[float], planners: Sequence[str]) -> None:
+    """The measure against N_m, one panel per communication range: Figs. 3–6 and 7b."""
     for ax, rc in zip(axes, ranges, strict=True):
-        _lines(ax, rows[rows["rc"] == rc], "drones", metric, dodge=0.2)
+        _lines(ax, rows[rows["rc"] == rc], "drones", measure, planners, dodge=0.2)
         ax.set_title(f"$r_c$ = {rc:g} m")
         ax.set_xlabel("number of drones $N_m$")
         ax.set_xticks(DRONES[::2])
@@ -197,14 +175,16 @@ def fig1(plan_times: pd.DataFrame, fig: Figure | None = None) -> Figure:
     fig, axes = _axes(fig, 1, 1)
     ax = axes[0, 0]
     stats = _plan_time_stats(plan_times)
-    for planner in PLAN_TIME_PLANNERS:
+    planners = _planners(plan_times)
+    for planner in planners:
         sub = stats[stats["planner"] == planner]
-        colour, marker = STYLE[planner]
-        ax.plot(sub["drones"], sub["median"], color=colour, marker=marker)
-        ax.fill_between(sub["drones"], sub["min"], sub["max"], color=colour, alpha=_BAND, lw=0)
+        style = get_planner(planner)
+        ax.plot(sub["drones"], sub["median"], color=style.colour, marker=style.marker)
+        ax.fill_between(sub["drones"], sub["min"], sub["max"], color=style.colour, alpha=_BAND,
+                        lw=0)
     ax.set(yscale="log", xlabel="number of drones $N_m$", ylabel="plan computation time (s)",
            title="$r_c$ = 500 m", xticks=DRONES[::2])
-    _legend(fig, PLAN_TIME_PLANNERS)
+    _legend(fig, planners)
     return fig
 
 
@@ -220,10 +200,11 @@ def fig2(curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
     """Fig. 2: P_s against t_d from the empirical CDF of notification times; a row per team
     size (10, 22), a panel per r_c."""
     fig, axes = _axes(fig, len(FIG2_DRONES), len(RANGES))
+    planners = _planners(curve)
     for row, n in zip(axes, FIG2_DRONES, strict=True):
         for ax, rc in zip(row, RANGES, strict=True):
             sub = curve[(curve["drones"] == n) & (curve["rc"] == rc)]
-            _lines(ax, sub, "td", P_S, markevery=5)
+            _lines(ax, sub, "td", P_S, planners, markevery=5)
             ax.set_title(f"$N_m$ = {n}, $r_c$ = {rc:g} m")
             ax.set_xlabel("target duration $t_d$ (s)")
         for ax in row[1:]:
@@ -231,16 +212,17 @@ def fig2(curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
     for ax in axes.flat:
         ax.set_xlim(0, TD_LONG)
         ax.set_xticks(np.arange(0, TD_LONG + 1, 1000))
-    _legend(fig)
+    _legend(fig, planners)
     return fig
 
 
-def _one_row(fig: Figure | None, main: pd.DataFrame, td: float, metric: Metric,
+def _one_row(fig: Figure | None, main: pd.DataFrame, td: float, measure: Measure,
              ranges: Sequence[float]) -> Figure:
-    """One metric at one ``td`` against N_m, a panel per communication range."""
+    """One measure at one ``td`` against N_m, a panel per communication range."""
     fig, axes = _axes(fig, 1, len(ranges))
-    _versus_drones(axes[0], _at(main, td), metric, ranges)
-    _legend(fig)
+    planners = _planners(main)
+    _versus_drones(axes[0], _at(main, td), measure, ranges, planners)
+    _legend(fig, planners)
     return fig
 
 
@@ -256,12 +238,13 @@ def fig4(main: pd.DataFrame, fig: Figure | None = None) -> Figure:
     r_c."""
     fig, axes = _axes(fig, 2, len(RANGES), sharey="row")
     rows = _at(main, TD_LONG)
-    for panel, metric, tag in zip(axes, (MISSION_TIME, SEARCH_SHARE), "ab", strict=True):
-        _versus_drones(panel, rows, metric, RANGES)
+    planners = _planners(main)
+    for panel, measure, tag in zip(axes, (MISSION_TIME, SEARCH_SHARE), "ab", strict=True):
+        _versus_drones(panel, rows, measure, RANGES, planners)
         panel[0].set_ylabel(f"({tag}) {panel[0].get_ylabel()}")
     for ax in axes[1]:
         ax.set_ylim(0, 1.02)
-    _legend(fig)
+    _legend(fig, planners)
     return fig
 
 
@@ -286,14 +269,15 @@ def fig7(miss: pd.DataFrame, shadowing: pd.DataFrame, fig: Figure | None = None)
     r_c = 1000 m, t_d = 4000 s."""
     fig, axes = _axes(fig, 1, 2, sharey=False)
     a, b = axes[0]
-    _lines(a, miss, "p_miss", P_D, dodge=0.01)
+    planners = _planners(miss, shadowing)
+    _lines(a, miss, "p_miss", P_D, planners, dodge=0.01)
     a.set(xlabel="miss probability $p_{miss}$",
           title=f"(a) imperfect sensing\n$N_m$ = 10, $r_c$ = 500 m, $t_d$ = {TD_SHORT:g} s")
     rc = float(shadowing["rc"].iloc[0])
-    _versus_drones([b], _at(shadowing, TD_LONG), IMMEDIATE, [rc])
+    _versus_drones([b], _at(shadowing, TD_LONG), IMMEDIATE, [rc], planners)
     b.set_title(f"(b) log-normal shadowing, σ = {SIGMA:g} dB\n"
                 f"$r_c$ = {rc:g} m, $t_d$ = {TD_LONG:g} s")
-    _legend(fig)
+    _legend(fig, planners)
     return fig
 
 
@@ -310,13 +294,14 @@ def save(fig: Figure, folder: Path, name: str) -> list[Path]:
 # -- the plotted values, as text tables ---------------------------------------------------------
 
 
-def _values(rows: pd.DataFrame, keys: Sequence[str], metrics: Sequence[Metric]) -> pd.DataFrame:
-    """The plotted rows as text: the keys, then each metric with its interval."""
+def _values(rows: pd.DataFrame, keys: Sequence[str], measures: Sequence[Measure]
+            ) -> pd.DataFrame:
+    """The plotted rows as text: the keys, then each measure with its interval."""
     rows = rows.sort_values(keys, key=_legend_order)
     out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else "{:g}".format)
                         for k in keys})
-    for metric in metrics:
-        out[metric.header] = [metric.text(r) for _, r in rows.iterrows()]
+    for measure in measures:
+        out[_header(measure)] = [measure.text(r) for _, r in rows.iterrows()]
     return out.reset_index(drop=True)
 
 
@@ -338,11 +323,11 @@ def _fig2_values(curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
     return [("", _values(rows, ["drones", "rc", "planner", "td"], [P_S]))]
 
 
-def _main_values(td: float, metrics: Sequence[Metric], ranges: Sequence[float] = RANGES
+def _main_values(td: float, measures: Sequence[Measure], ranges: Sequence[float] = RANGES
                  ) -> Callable[[pd.DataFrame], list[tuple[str, pd.DataFrame]]]:
     def values(main: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
         rows = _at(main, td)
-        return [("", _values(rows[rows["rc"].isin(ranges)], _VERSUS_KEYS, metrics))]
+        return [("", _values(rows[rows["rc"].isin(ranges)], _VERSUS_KEYS, measures))]
     return values
 
 

@@ -20,11 +20,11 @@ from pathlib import Path
 import pandas as pd
 
 from sarlink.config import Mission
+from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import (
     CURVE_TDS,
     DRONES,
     P_MISS,
-    PLANNERS,
     RANGES,
     SEED,
     SIGMA,
@@ -33,10 +33,10 @@ from sarlink.paper.experiments import (
     TD_SHORT,
 )
 from sarlink.paper.figures import FIGURES
-from sarlink.paper.findings import Finding
-from sarlink.planners import get_planner
+from sarlink.paper.findings import CLAIMS, DEFAULT_SETTINGS, Finding, Settings, tally
+from sarlink.planners import get_planner, planner_names
 
-__all__ = ["Stage", "machine", "write_report"]
+__all__ = ["ReplayLink", "Stage", "machine", "write_report"]
 
 
 @dataclass(frozen=True)
@@ -49,9 +49,19 @@ class Stage:
 
 
 @dataclass(frozen=True)
+class ReplayLink:
+    """A replay page beside the report, and what it shows."""
+
+    page: Path
+    about: str
+
+
+@dataclass(frozen=True)
 class _Heading:
     text: str
     level: int
+    css: str | None = None
+    """HTML class: how a claim came out."""
 
 
 @dataclass(frozen=True)
@@ -77,7 +87,13 @@ class _Image:
     caption: str
 
 
-_Block = _Heading | _Para | _List | _Table | _Image
+@dataclass(frozen=True)
+class _Link:
+    text: str
+    href: str
+
+
+_Block = _Heading | _Para | _List | _Table | _Image | _Link
 
 
 def machine() -> dict[str, str]:
@@ -105,7 +121,7 @@ def _pairs(rows: Sequence[tuple[str, str]], header: tuple[str, str]) -> pd.DataF
 
 def _setting(runs: int, quick: bool) -> list[_Block]:
     m = Mission()
-    labels = ", ".join(get_planner(p).label for p in PLANNERS)
+    labels = ", ".join(get_planner(p).label for p in planner_names())
     rows = [
         ("area a × a", f"{m.area.size:g} m × {m.area.size:g} m, BS at the centre"),
         ("drone speed V_m", f"{m.team.speed:g} m/s"),
@@ -143,24 +159,45 @@ def _timing(seconds: float, stages: Sequence[Stage], workers: str) -> list[_Bloc
     ]
 
 
-def _findings(findings: Sequence[Finding]) -> list[_Block]:
-    blocks: list[_Block] = [_Heading("Findings", 2)]
+_CSS_CLASS = {Outcome.HOLDS: "holds", Outcome.CONTRADICTED: "fails",
+              Outcome.UNDECIDED: "undecided"}
+
+
+def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
+            settings: Settings) -> list[_Block]:
+    """The paper's claims grouped by figure, each with its outcome, criterion and numbers."""
+    unchecked = [c for c in CLAIMS if not c.checkable(tables)]
+    blocks: list[_Block] = [_Heading("The paper's claims", 2)]
     if not findings:
-        return [*blocks, _Para("The findings are checked on the runs of Figs. 2–6, which this "
-                               "reproduction did not include.")]
-    holding = sum(f.holds for f in findings)
-    blocks.append(_Para(
-        f"{holding} of {len(findings)} of the paper's findings hold in this reproduction. Each "
-        "is decided from the summary tables by the criterion quoted with it; all intervals are "
-        "95% (Wilson for probabilities, ± 1.96 standard errors for means, Newcombe for "
-        "differences, averages over team sizes with averaged bounds), and every comparison is "
-        "conservative, so a claim holds only where the intervals support it."))
-    for i, f in enumerate(findings, 1):
-        blocks += [_Heading(f"{i}. {f.claim} — {'holds' if f.holds else 'does not hold'}", 3),
-                   _Para("Criterion: " + " ".join(f.criterion.split())),
-                   _Para("Numbers:"), _List(f.evidence.splitlines())]
-        if not f.holds:
-            blocks += [_Para("What sarlink shows instead:"), _List(f.instead.splitlines())]
+        return [*blocks, _Para("The claims are checked on the runs of the figures they are "
+                               "about, none of which this reproduction included.")]
+    blocks += [
+        _Para(f"{len(findings)} of the paper's claims checked: {tally(findings)}."
+              + (f" Not checked, for want of the runs of their figures: "
+                 f"{len(unchecked)} ({', '.join(sorted({c.figure for c in unchecked}))})."
+                 if unchecked else "")),
+        _Para("Each claim is decided from the summary tables by the criterion quoted with it. "
+              "All intervals are 95% (Wilson for probabilities, ± 1.96 standard errors for "
+              "means, Newcombe for differences, averages over team sizes with averaged "
+              "bounds, Welch and least-squares t intervals for plan times), and every "
+              "comparison is conservative: a claim holds where the intervals support every "
+              "part of it, is contradicted where they exclude a part, and is otherwise "
+              "undecided at this sample size (more runs per point can settle it). "
+              f"Fig. 3's t_d, which the paper does not state, is taken as "
+              f"{settings.td_fig3:g} s."),
+        _Table(pd.DataFrame([(f.figure, f.claim, f.outcome.value) for f in findings],
+                            columns=["figure", "claim", "outcome"])),
+    ]
+    for figure in dict.fromkeys(f.figure for f in findings):
+        blocks.append(_Heading(figure, 3))
+        for f in (f for f in findings if f.figure == figure):
+            blocks += [
+                _Heading(f"{f.claim} — {f.outcome.value}", 4, _CSS_CLASS[f.outcome]),
+                _Para("Criterion: " + f.criterion),
+                _List([f"{p.text} — {p.outcome.value}" for p in f.parts]),
+            ]
+            if f.notes:
+                blocks += [_Para("For context:"), _List(list(f.notes))]
     return blocks
 
 
@@ -184,16 +221,26 @@ def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame
     return blocks
 
 
+def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
+    if link is None:
+        return []
+    name = link.page.relative_to(out).as_posix()
+    return [_Heading("Watch a mission", 2), _Para(link.about),
+            _Link(f"Open {name} (beside this report; any browser, no network needed)", name)]
+
+
 def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
               tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
-              stages: Sequence[Stage], seconds: float, workers: str) -> list[_Block]:
+              settings: Settings, stages: Sequence[Stage], seconds: float, workers: str,
+              replay: ReplayLink | None) -> list[_Block]:
     intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
              "\"Connectivity considerations for mission planning of a search and rescue drone "
              f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
              f"{runs} runs per grid point.")
     return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
-            *_findings(findings), *_setting(runs, quick), *_timing(seconds, stages, workers),
-            *_figures(out, figures, tables)]
+            *_claims(findings, tables, settings), *_setting(runs, quick),
+            *_timing(seconds, stages, workers),
+            *_figures(out, figures, tables), *_replay(out, replay)]
 
 
 # -- rendering ----------------------------------------------------------------------------------
@@ -211,7 +258,7 @@ def _markdown(blocks: Sequence[_Block]) -> str:
     parts = []
     for b in blocks:
         match b:
-            case _Heading(text, level):
+            case _Heading(text, level, _):
                 parts.append("#" * level + " " + text)
             case _Para(text):
                 parts.append(text)
@@ -224,6 +271,8 @@ def _markdown(blocks: Sequence[_Block]) -> str:
                              f"{_md_table(frame)}\n\n</details>")
             case _Image(png, caption):
                 parts.append(f"![{caption}]({png.as_posix()})\n\n*{caption}*")
+            case _Link(text, href):
+                parts.append(f"[{text}]({href})")
     return "\n\n".join(parts) + "\n"
 
 
@@ -236,7 +285,7 @@ th, td { border: 1px solid #ccc; padding: .2em .6em; text-align: left; }
 th { background: #f3f3f3; } tr:nth-child(even) td { background: #fafafa; }
 img { max-width: 100%; } figcaption { font-style: italic; margin-bottom: 1em; }
 details { margin: .5em 0 1.2em; } summary { cursor: pointer; color: #245; }
-.holds { color: #176617; } .fails { color: #a32020; }
+.holds { color: #176617; } .fails { color: #a32020; } .undecided { color: #7a5a00; }
 """
 
 
@@ -251,11 +300,9 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
     parts = []
     for b in blocks:
         match b:
-            case _Heading(text, level):
-                css = ""
-                if level == 3 and text.endswith(("— holds", "— does not hold")):
-                    css = ' class="holds"' if text.endswith("— holds") else ' class="fails"'
-                parts.append(f"<h{level}{css}>{html.escape(text)}</h{level}>")
+            case _Heading(text, level, css):
+                attribute = f' class="{css}"' if css else ""
+                parts.append(f"<h{level}{attribute}>{html.escape(text)}</h{level}>")
             case _Para(text):
                 parts.append(f"<p>{html.escape(text)}</p>")
             case _List(items):
@@ -271,6 +318,8 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
                 parts.append(f'<figure><img src="data:image/png;base64,{data}" '
                              f'alt="{html.escape(caption)}"><figcaption>{html.escape(caption)}'
                              "</figcaption></figure>")
+            case _Link(text, href):
+                parts.append(f'<p><a href="{html.escape(href)}">{html.escape(text)}</a></p>')
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             "<title>sarlink: reproduction of the paper</title>"
             f"<style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
@@ -278,14 +327,19 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
 
 def write_report(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
                  tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
-                 stages: Sequence[Stage], seconds: float, workers: str) -> tuple[Path, Path]:
+                 stages: Sequence[Stage], seconds: float, workers: str,
+                 settings: Settings = DEFAULT_SETTINGS,
+                 replay: ReplayLink | None = None) -> tuple[Path, Path]:
     """Write ``out/report.md`` and ``out/report.html``; return their paths.
 
     ``figures`` maps figure numbers to their PNG files inside ``out``; ``tables`` holds the
-    summary tables the figures were drawn from; ``workers`` says what ran the simulations.
+    summary tables the figures were drawn from and ``findings`` the claims checked on them,
+    under ``settings``; ``workers`` says what ran the simulations; ``replay`` is a replay page
+    inside ``out`` to link.
     """
     blocks = _document(out, runs=runs, quick=quick, figures=figures, tables=tables,
-                       findings=findings, stages=stages, seconds=seconds, workers=workers)
+                       findings=findings, settings=settings, stages=stages, seconds=seconds,
+                       workers=workers, replay=replay)
     md, page = out / "report.md", out / "report.html"
     md.write_text(_markdown(blocks), encoding="utf-8")
     page.write_text(_html(blocks, out), encoding="utf-8")

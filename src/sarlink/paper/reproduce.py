@@ -1,4 +1,4 @@
-"""Rerun the paper's evaluation: sweeps, plan timing, summary tables, figures, findings, report.
+"""Rerun the paper's evaluation: sweeps, plan timing, summary tables, figures, claims, report.
 
 Layout of the output folder::
 
@@ -8,6 +8,7 @@ Layout of the output folder::
                            plan_times
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
+    replay-rc500.html      one run flown by every planner, replayed side by side (linked)
 """
 
 from __future__ import annotations
@@ -23,11 +24,20 @@ import pandas as pd
 
 from sarlink.config import ConfigError, Mission
 from sarlink.execution import sweep
-from sarlink.paper.experiments import EXPERIMENTS, QUICK_RUNS, RUNS, plan_time_missions
+from sarlink.paper.experiments import (
+    EXPERIMENTS,
+    QUICK_RUNS,
+    RUNS,
+    SEED,
+    plan_time_missions,
+)
 from sarlink.paper.figures import FIGURES, save
-from sarlink.paper.findings import Finding, check_all
-from sarlink.paper.report import Stage, machine, write_report
+from sarlink.paper.findings import DEFAULT_SETTINGS, Finding, Settings, check_all
+from sarlink.paper.report import ReplayLink, Stage, machine, write_report
+from sarlink.planners import get_planner, planner_names
 from sarlink.plantime import plan_seconds
+from sarlink.playback import compare
+from sarlink.simulation import simulate
 
 __all__ = ["ReproductionResult", "reproduce"]
 
@@ -47,12 +57,14 @@ class ReproductionResult:
     tables: dict[str, pd.DataFrame]
     """Summary tables by name, as written to ``out/tables``."""
     findings: list[Finding]
-    """The paper's findings checked (empty unless Figs. 2–6 were reproduced)."""
+    """The paper's claims checked: those whose figures were reproduced."""
     report_md: Path
     report_html: Path
     seconds: float
     """Wall time of the call, report writing aside."""
     stages: list[Stage]
+    replay: Path
+    """The side-by-side replay of one run at r_c = 500 m that the report links."""
 
 
 def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
@@ -91,10 +103,31 @@ def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
         table.to_parquet(folder / f"{name}.parquet", index=False)
 
 
+def _replay(out: Path) -> ReplayLink:
+    """Every planner flying one run at r_c = 500 m, side by side (``replay-rc500.html``): the
+    first run of the paper's seed that every planner notifies, so that each panel shows a
+    detection and the multihop path that carried it to the BS."""
+    mission = Mission.build(drones=10, rc=500.0)
+    planners = planner_names()
+    run = next((k for k in range(100) if all(
+        simulate(mission.replace(planner=p), seed=SEED, run=k).t_notify is not None
+        for p in planners)), 0)
+    page = compare(mission, planners, SEED, run)
+    times = ", ".join(f"{get_planner(p.mission.team.planner).label} {p.result.t_notify:g} s"
+                      for p in page.panels if p.result.t_notify is not None)
+    about = (f"Run {run} of seed {SEED} at N = 10, r_c = 500 m, t_d = "
+             f"{mission.timing.horizon:g} s, flown by each planner (same target, same take-off) "
+             "and replayed side by side under one time control: the first run of the seed that "
+             "every planner notifies, so that each panel shows a detection and how the news "
+             f"travelled to the BS. The BS was notified at: {times}.")
+    return ReplayLink(page.write(out / "replay-rc500.html"), about)
+
+
 def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
               figures: Iterable[int] | None = None, workers: int | None = None,
               scheduler: str | None = None, progress: bool = True,
-              plan_iterations: int | None = None) -> ReproductionResult:
+              plan_iterations: int | None = None,
+              settings: Settings = DEFAULT_SETTINGS) -> ReproductionResult:
     """Rerun the experiments behind the paper's figures into ``out`` and report on them.
 
     Only the sweeps the requested figures need are run; runs already stored in ``out`` (by an
@@ -116,6 +149,8 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     plan_iterations
         GA iterations for Fig. 1's mTSP timing instead of the paper's 5000 (for tests only:
         the time depends on it).
+    settings
+        The choices the paper leaves open that the claims' checks depend on.
     """
     start = time.perf_counter()
     out = Path(out)
@@ -147,17 +182,23 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
 
     t0 = time.perf_counter()
     _write_tables(out / "tables", tables)
-    findings = check_all(tables["main"]) if "main" in tables else []
+    findings = check_all(tables, settings)
     drawn = {}
     for n in numbers:
         spec = FIGURES[n]
         drawn[n] = save(spec.draw(*(tables[t] for t in spec.tables)), out / "figures", f"fig{n}")
     stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
                         time.perf_counter() - t0))
+    t0 = time.perf_counter()
+    replay = _replay(out)
+    stages.append(Stage("replay", f"{replay.page.name}: one run by each planner",
+                        time.perf_counter() - t0))
     seconds = time.perf_counter() - start
     where = (f"Dask scheduler {scheduler}" if scheduler is not None
              else f"{workers or os.cpu_count()} local processes")
     md, page = write_report(out, runs=runs, quick=quick,
                             figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
-                            findings=findings, stages=stages, seconds=seconds, workers=where)
-    return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages)
+                            findings=findings, stages=stages, seconds=seconds, workers=where,
+                            settings=settings, replay=replay)
+    return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages,
+                              replay.page)

@@ -23,6 +23,16 @@ class Planner(Protocol):
         """Name as the paper writes it (``CovB``)."""
         ...
 
+    @property
+    def colour(self) -> str:
+        """Its line colour in every figure (a Matplotlib colour)."""
+        ...
+
+    @property
+    def marker(self) -> str:
+        """Its marker in every figure (a Matplotlib marker)."""
+        ...
+
     def steering(self, mission: Mission) -> Steering:
         """What the engine needs to fly ``mission`` with this planner."""
         ...

@@ -16,6 +16,8 @@ if TYPE_CHECKING:
 class ConB:
     name: str = "conb"
     label: str = "ConB"
+    colour: str = "#2ca02c"
+    marker: str = "^"
 
     def steering(self, mission: Mission) -> Steering:
         return Steering(rule=Rule.CONB, alpha=0.0)

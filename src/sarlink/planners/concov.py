@@ -16,6 +16,8 @@ if TYPE_CHECKING:
 class ConCov:
     name: str = "concov"
     label: str = "ConCov"
+    colour: str = "#9467bd"
+    marker: str = "v"
 
     def steering(self, mission: Mission) -> Steering:
         return Steering(rule=Rule.CONCOV, alpha=mission.team.alpha)

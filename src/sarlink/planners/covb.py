@@ -16,6 +16,8 @@ if TYPE_CHECKING:
 class CovB:
     name: str = "covb"
     label: str = "CovB"
+    colour: str = "#ff7f0e"
+    marker: str = "s"
 
     def steering(self, mission: Mission) -> Steering:
         return Steering(rule=Rule.COVB, alpha=1.0)

@@ -16,6 +16,8 @@ if TYPE_CHECKING:
 class Mtsp:
     name: str = "mtsp"
     label: str = "mTSP"
+    colour: str = "#1f77b4"
+    marker: str = "o"
 
     def steering(self, mission: Mission) -> Steering:
         # imported here so that the registry loads without Numba kernels or OR-Tools

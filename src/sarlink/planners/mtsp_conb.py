@@ -18,6 +18,8 @@ if TYPE_CHECKING:
 class MtspConB:
     name: str = "mtsp-conb"
     label: str = "mTSP-ConB"
+    colour: str = "#d62728"
+    marker: str = "D"
 
     def steering(self, mission: Mission) -> Steering:
         # imported here so that the registry loads without Numba kernels or OR-Tools

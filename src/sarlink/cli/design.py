@@ -1,0 +1,202 @@
+"""``sarlink design``: the smallest team, planner and setting that meet a success requirement."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+from rich.table import Table
+
+from sarlink.cli.common import build_mission, console, print_json, user_errors
+from sarlink.config import ConfigError
+
+if TYPE_CHECKING:
+    from sarlink.sizing import DesignAnswer, Estimate, PlannerAnswer
+
+_OPTION_NAMES = {"planners": "--planner", "options": "--option"}
+
+
+def _as_option(message: str) -> str:
+    """A request error with its field written as the option the user typed (``--max-drones``)."""
+    from sarlink.sizing import DesignRequest
+
+    def rename(match: re.Match[str]) -> str:
+        field = match[1]
+        return _OPTION_NAMES.get(field, "--" + field.replace("_", "-")) + match[2]
+
+    fields = "|".join(DesignRequest.model_fields)
+    return re.sub(rf"(?:(?<=^)|(?<=; ))({fields})(:)", rename, message)
+
+
+def _value(text: str) -> Any:
+    """An option value as the mission expects it: an integer, a number, or the text."""
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def _options(specs: list[str]) -> dict[str, list[Any]]:
+    options: dict[str, list[Any]] = {}
+    for spec in specs:
+        name, sep, values = spec.partition("=")
+        if not sep or not name.strip():
+            raise ConfigError(f"--option: expected NAME=VALUE[,VALUE...], got {spec!r}")
+        options[name.strip()] = [_value(v.strip()) for v in values.split(",") if v.strip()]
+    return options
+
+
+def _probability(e: Estimate) -> str:
+    return f"{e.p:.3f} [{e.lo:.3f}, {e.hi:.3f}]"
+
+
+def _minutes(seconds: float) -> str:
+    return "–" if math.isnan(seconds) else f"{seconds:.0f} s"
+
+
+def _setting(planner: PlannerAnswer) -> str:
+    if planner.tuning is None or planner.chosen is None:
+        return "–"
+    tuning = planner.tuning
+    others = [v for v in tuning.equivalent if v != planner.chosen.value]
+    spread = f" (not told apart: {', '.join(f'{v:g}' for v in others)})" if others else ""
+    return f"{tuning.setting} = {planner.chosen.value:g}{spread}"
+
+
+def _print(answer: DesignAnswer) -> None:
+    r = answer.request
+    m = r.mission
+    table = Table(title=f"Smallest team with P_s({r.td:g} s) >= {r.ps:g} at {r.confidence:.0%} "
+                        f"confidence (r_c = {m.channel.rc:g} m, area {m.area.size:g} m, "
+                        f"up to {r.max_drones} drones)", title_justify="left")
+    for name in ("planner", "smallest team", "P_s [95% Wilson]", "runs", "setting",
+                 "mission time"):
+        table.add_column(name, justify="left" if name in ("planner", "setting") else "right")
+    for p in answer.planners:
+        if p.chosen is None:
+            why = ("not reachable within the largest team" if p.status == "not reachable"
+                   else f"undecided: team sizes {_sizes(p.undecided)} too close to tell")
+            table.add_row(p.label, f"[dim]{why}[/]", "", "", "", "")
+            continue
+        note = f" ({_sizes(p.undecided)} undecided)" if p.undecided else ""
+        table.add_row(p.label, f"{p.smallest}{note}", _probability(p.chosen),
+                      f"{p.chosen.runs:,}", _setting(p), _minutes(p.chosen.mission_time))
+    console.print(table)
+    for p in answer.planners:
+        if p.tuning is not None:
+            _print_tuning(p)
+    best = answer.recommendation
+    if best is None or best.chosen is None:
+        console.print(f"[bold]No planner reaches P_s >= {r.ps:g} within {r.max_drones} "
+                      "drones.[/]")
+    else:
+        setting = "" if best.tuning is None else f", {_setting(best)}"
+        console.print(f"[bold]Recommendation: {best.label} with {best.chosen.drones} drones"
+                      f"{setting}[/]: P_s = {_probability(best.chosen)} from "
+                      f"{best.chosen.runs:,} runs, mean mission time "
+                      f"{_minutes(best.chosen.mission_time)}.", highlight=False)
+    ended = ("the statistics" if answer.ended_by == "statistics"
+             else f"the budget (--max-runs {r.max_runs:,}): more runs could change it")
+    console.print(f"Runs: {answer.runs_used:,} used ({answer.runs_simulated:,} simulated now, "
+                  f"{answer.runs_used - answer.runs_simulated:,} reused); a full grid of "
+                  f"{answer.grid_points:,} candidates at 2000 runs each: {answer.grid_runs:,}. "
+                  f"The search was ended by {ended}.", highlight=False)
+
+
+def _sizes(sizes: tuple[int, ...]) -> str:
+    return ", ".join(map(str, sizes))
+
+
+def _print_tuning(planner: PlannerAnswer) -> None:
+    tuning = planner.tuning
+    assert tuning is not None
+    table = Table(title=f"{planner.label} at {planner.smallest} drones: P_s against "
+                        f"{tuning.setting} (search ended by {tuning.ended_by})",
+                  title_justify="left")
+    for name in (tuning.setting, "P_s [95% Wilson]", "runs", "verdict"):
+        table.add_column(name, justify="right")
+    for e in tuning.curve:
+        mark = " *" if e.value == tuning.best.value else ""
+        table.add_row(f"{e.value:g}{mark}", _probability(e), f"{e.runs:,}", e.verdict.value)
+    console.print(table)
+
+
+def design(
+    td: Annotated[float, typer.Option(help="target duration t_d, s")],
+    ps: Annotated[float, typer.Option(help="required P_s(t_d), in (0, 1)")],
+    planner: Annotated[list[str] | None, typer.Option(
+        help="planner to consider; repeat for several; default: all")] = None,
+    option: Annotated[list[str] | None, typer.Option(
+        help="NAME=V1,V2: also try every planner with each value of a mission parameter; "
+             "repeat for several")] = None,
+    max_drones: Annotated[int, typer.Option(help="largest team considered")] = 22,
+    rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
+    size: Annotated[float | None, typer.Option(help="side of the square area, m")] = None,
+    r: Annotated[float | None, typer.Option(help="sensing range r, m")] = None,
+    p_miss: Annotated[float | None, typer.Option(help="miss probability per look")] = None,
+    look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
+    shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
+    pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
+    config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
+    confidence: Annotated[float, typer.Option(help="confidence of every decision")] = 0.95,
+    max_runs: Annotated[int, typer.Option(help="budget: runs the whole design may use")
+                        ] = 400_000,
+    candidate_runs: Annotated[int, typer.Option(help="most runs of one candidate")] = 6400,
+    first_runs: Annotated[int, typer.Option(help="runs of a candidate at its first look")] = 50,
+    margin: Annotated[float, typer.Option(
+        help="settings shown within this margin of the best P_s are as good")] = 0.01,
+    alpha_step: Annotated[float, typer.Option(help="ConCov alpha grid spacing")] = 0.1,
+    alpha_tol: Annotated[float, typer.Option(help="finest alpha spacing")] = 0.025,
+    seed: Annotated[int, typer.Option(help="seed of every run")] = 2024,
+    out: Annotated[Path, typer.Option("--out", "-o", help="runs folder, reused by reruns")
+                   ] = Path("design-results"),
+    workers: Annotated[int | None, typer.Option(
+        help="worker processes (local pool or --dask-local); default: one per core")] = None,
+    scheduler: Annotated[str | None, typer.Option(
+        help="address of a running Dask scheduler, tcp://host:port")] = None,
+    dask_local: Annotated[bool, typer.Option(
+        "--dask-local", help="run on a Dask LocalCluster instead of the process pool")] = False,
+    json: Annotated[bool, typer.Option("--json", help="print the answer as JSON")] = False,
+    plot: Annotated[Path | None, typer.Option(help="write a figure of the answer here")] = None,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bar")] = False,
+) -> None:
+    """Find the smallest team, planner and setting whose P_s(t_d) meets a requirement."""
+    from sarlink.sizing import DesignRequest
+    from sarlink.sizing import design as run_design  # pandas: only for this command
+
+    with user_errors():
+        mission = build_mission(config, rc=rc, size=size, r=r, p_miss=p_miss, look=look,
+                                sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent)
+        fields: dict[str, Any] = {
+            "mission": mission, "td": td, "ps": ps, "options": _options(option or []),
+            "max_drones": max_drones, "confidence": confidence, "max_runs": max_runs,
+            "candidate_runs": candidate_runs, "first_runs": first_runs, "margin": margin,
+            "alpha_step": alpha_step, "alpha_tol": alpha_tol, "seed": seed,
+        }
+        if planner is not None:
+            fields["planners"] = tuple(planner)
+        try:
+            request = DesignRequest.from_dict(fields)
+        except ConfigError as exc:
+            raise ConfigError(_as_option(str(exc))) from None
+        answer = run_design(request, out, workers=workers, scheduler=scheduler,
+                            dask_local=dask_local, progress=not quiet and not json)
+    if plot is not None:
+        import matplotlib.pyplot as plt
+
+        from sarlink.plots.design import plot_design
+
+        fig = plot_design(answer)
+        fig.savefig(plot, dpi=150)
+        plt.close(fig)
+    if json:
+        print_json(answer.to_json())
+        return
+    _print(answer)
+    if plot is not None:
+        console.print(f"figure written to {plot}")

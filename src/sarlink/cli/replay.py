@@ -1,0 +1,55 @@
+"""``sarlink replay``: one run flown by several planners, replayed side by side in a browser."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from sarlink.cli import options
+from sarlink.cli.common import build_mission, console, user_errors
+from sarlink.planners import planner_names
+from sarlink.playback import compare
+
+
+def replay(
+    planners: Annotated[str | None, typer.Option(
+        help="planners to compare, separated by commas; default all")] = None,
+    drones: options.Drones = None,
+    rc: options.Rc = None,
+    seed: options.Seed = 0,
+    run: options.Run = 0,
+    alpha: options.Alpha = None,
+    nr: options.Nr = None,
+    td: options.Td = None,
+    r: options.R = None,
+    p_miss: options.PMiss = None,
+    look: options.Look = None,
+    shadowing_sigma: options.Sigma = None,
+    pathloss_exponent: options.PathlossExponent = None,
+    stop: options.Stop = None,
+    config: options.Config = None,
+    out: Annotated[Path, typer.Option("--out", "-o", help="the HTML file to write")
+                   ] = Path("replay.html"),
+) -> None:
+    """Write one self-contained HTML page replaying run RUN of SEED (same target, same
+    take-off) with each planner, in synchronised panels under one time control; open it in
+    any browser, without network."""
+    names = planner_names() if planners is None else [
+        name.strip() for name in planners.split(",") if name.strip()]
+    with user_errors():
+        mission = build_mission(
+            config, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r, p_miss=p_miss,
+            look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent, stop=stop,
+        )
+        page = compare(mission, names, seed, run)
+        page.write(out)
+    for panel in page.panels:
+        res = panel.result
+        detected = "not detected" if res.t_detect is None else f"detected at {res.t_detect:g} s"
+        notified = ("BS not notified" if res.t_notify is None
+                    else f"BS notified at {res.t_notify:g} s")
+        console.print(f"{panel.title}: {detected}, {notified}", highlight=False)
+    console.print(f"replay written to {out} ({out.stat().st_size / 1e6:.1f} MB): open it in a "
+                  "browser, no network needed", highlight=False, soft_wrap=True)

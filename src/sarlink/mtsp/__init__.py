@@ -1,0 +1,34 @@
+"""mTSP plans for the centralized planners (Section 3.1.1 of the paper; docs/mtsp.md).
+
+The search area is cut into square cells whose centres are the cities (:mod:`.grid`); a multiple
+travelling salesmen plan sends every drone from the base station (BS, the depot) through its own
+cells and back (:mod:`.plan`). :func:`solve` checks the arguments and hands them to a solver:
+
+``ga`` (:mod:`.ga`)
+    The paper's genetic algorithm, after Joseph Kirk's MATLAB ``mtspf_ga``, compiled with Numba:
+    faithful, seeded, a tenth of a second for 80 × 5000 on 64 cells.
+``ortools`` (:mod:`.ortools`)
+    OR-Tools routing with guided local search: a strong solver to measure the GA against.
+
+:func:`plan_for` makes each mission's plan once and caches it on disk (:mod:`.cache`).
+"""
+
+from sarlink.mtsp.cache import CACHE_VERSION, cache_dir, clear_cache, plan_for, solve_for
+from sarlink.mtsp.grid import grid_cells
+from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT
+from sarlink.mtsp.plan import MtspPlan, Objective, Solver
+from sarlink.mtsp.solvers import solve
+
+__all__ = [
+    "CACHE_VERSION",
+    "ORTOOLS_TIME_LIMIT",
+    "MtspPlan",
+    "Objective",
+    "Solver",
+    "cache_dir",
+    "clear_cache",
+    "grid_cells",
+    "plan_for",
+    "solve",
+    "solve_for",
+]

@@ -1,0 +1,97 @@
+"""One entry point for every mTSP solver: arguments checked once, the plan built once."""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Any
+
+import numpy as np
+
+from sarlink.mtsp.ga import solve_ga
+from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT, solve_ortools
+from sarlink.mtsp.plan import MtspPlan, Objective, Solver
+
+__all__ = ["solve"]
+
+
+def solve(
+    points: np.ndarray,
+    depot: tuple[float, float],
+    salesmen: int,
+    *,
+    solver: Solver = "ga",
+    objective: Objective = "minsum",
+    min_cells: int | None = None,
+    population: int = 80,
+    iterations: int = 5000,
+    seed: int = 0,
+    time_limit: float = ORTOOLS_TIME_LIMIT,
+) -> MtspPlan:
+    """Plan closed tours from ``depot`` that visit every point exactly once.
+
+    Parameters
+    ----------
+    points
+        The cities, shape ``(K, 2)``: the cell centres of :func:`grid_cells`, or any points.
+    depot
+        Start and end of every tour (the BS).
+    salesmen
+        Number of tours, ``1 <= salesmen <= K``; every salesman visits at least one point.
+    solver
+        ``"ga"``: Kirk's genetic algorithm (the paper's); ``"ortools"``: OR-Tools routing.
+    objective
+        ``"minsum"``: total distance (the paper's); ``"minmax"``: the longest tour, which is
+        what bounds the search time of a team.
+    min_cells
+        Minimum points per salesman; ``None`` means ``floor(K / salesmen)``, which balances the
+        tours enough that two drones finish the paper's search within their flight budget.
+    population, iterations, seed
+        GA settings. The population is rounded down to a multiple of 8 (groups of 8). The seed
+        is the only source of randomness; OR-Tools routing has no random seed and ignores it.
+    time_limit
+        OR-Tools search time, s. A time-limited search may end at a different plan on a
+        faster or slower machine; the GA does not depend on time.
+    """
+    pts = np.asarray(points, dtype=float)
+    if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) == 0:
+        raise ValueError(f"points must have shape (K, 2) with K >= 1, got {pts.shape}")
+    if not np.isfinite(pts).all():
+        raise ValueError("points must be finite")
+    if len(depot) != 2 or not all(math.isfinite(float(c)) for c in depot):
+        raise ValueError(f"depot must be two finite coordinates (x, y), got {depot!r}")
+    dep = (float(depot[0]), float(depot[1]))
+    k = len(pts)
+    _check_int("salesmen", salesmen, 1, k, f"{k}, the number of points")
+    if solver not in ("ga", "ortools"):
+        raise ValueError(f"solver must be 'ga' or 'ortools', got {solver!r}")
+    if objective not in ("minsum", "minmax"):
+        raise ValueError(f"objective must be 'minsum' or 'minmax', got {objective!r}")
+    most = k // salesmen
+    if min_cells is None:
+        min_cells = most
+    _check_int("min_cells", min_cells, 1, most, f"{most} = floor({k} points / {salesmen} salesmen)")
+    _check_int("population", population, 8, None)
+    _check_int("iterations", iterations, 1, None)
+    _check_int("seed", seed, 0, None)
+    if not (math.isfinite(time_limit) and time_limit > 0):
+        raise ValueError(f"time_limit must be a finite number of seconds > 0, got {time_limit}")
+
+    start = time.perf_counter()
+    if solver == "ga":
+        tours, history = solve_ga(pts, dep, salesmen, objective, min_cells,
+                                  population // 8 * 8, iterations, seed)
+    else:
+        tours = solve_ortools(pts, dep, salesmen, objective, min_cells, time_limit)
+        history = np.empty(0)
+    return MtspPlan(points=pts, depot=dep, tours=tours, min_cells=min_cells, solver=solver,
+                    objective=objective, history=history, seconds=time.perf_counter() - start)
+
+
+def _check_int(name: str, value: Any, lo: int, hi: int | None, hi_text: str = "") -> None:
+    """Raise a ValueError naming ``name`` and its allowed range unless ``lo <= value <= hi``."""
+    ok = isinstance(value, int | np.integer) and not isinstance(value, bool)
+    if ok and value >= lo and (hi is None or value <= hi):
+        return
+    allowed = f"an integer >= {lo}" if hi is None else f"an integer in [{lo}, {hi_text or hi}]"
+    raise ValueError(f"{name} must be {allowed}, got {value!r}")

@@ -1,0 +1,67 @@
+"""One panel of a replay: the run's fixed scenery, its events and its encoded frames."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from sarlink.config import Mission
+from sarlink.engine.codes import Mode
+from sarlink.planners import get_planner
+from sarlink.playback.encoding import encode
+from sarlink.playback.events import events
+from sarlink.result import RunResult
+
+__all__ = ["describe", "modes", "scene", "setting"]
+
+
+def setting(mission: Mission) -> str:
+    """Team size, range and the imperfections switched on, for titles."""
+    parts = [f"N = {mission.team.drones}", f"r_c = {mission.channel.rc:g} m"]
+    if mission.channel.sigma > 0:
+        parts.append(f"σ = {mission.channel.sigma:g} dB")
+    if mission.sensing.p_miss > 0:
+        parts.append(f"p_miss = {mission.sensing.p_miss:g}")
+    return ", ".join(parts)
+
+
+def describe(mission: Mission, result: RunResult) -> str:
+    """A panel's title: planner, setting, seed and run."""
+    return (f"{get_planner(mission.team.planner).label}, {setting(mission)} "
+            f"(seed {result.seed}, run {result.run})")
+
+
+def modes() -> list[dict[str, Any]]:
+    """Every drone mode the engine knows, so that the page colours new ones without edits."""
+    return [{"value": int(m), "name": m.name.lower()} for m in Mode]
+
+
+def scene(result: RunResult, mission: Mission, title: str | None = None,
+          budget: float = math.inf) -> dict[str, Any]:
+    """The JSON the page draws one run from; frames beyond ``budget`` bytes are thinned."""
+    traj = result.trajectory
+    if traj is None:
+        raise ValueError("a replay needs a result simulated with trajectory=True")
+    bs = mission.area.bs_xy
+    tours = [[list(bs), *route.tolist()]
+             for route in get_planner(mission.team.planner).steering(mission).routes
+             if len(route)]
+    return {
+        "title": title or describe(mission, result),
+        "planner": mission.team.planner,
+        "size": mission.area.size,
+        "bs": list(bs),
+        "rc": mission.channel.rc,
+        "r": mission.sensing.r,
+        "target": list(result.target),
+        "horizon": mission.timing.horizon,
+        "stop": mission.timing.stop,
+        "end": float(traj.t[-1]),
+        "tDetect": result.t_detect,
+        "tNotify": result.t_notify,
+        "detector": result.detector,
+        "immediate": result.immediate,
+        "events": [e.json() for e in events(result)],
+        "tours": tours,
+        "frames": encode(traj, budget).json(),
+    }

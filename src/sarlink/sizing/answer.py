@@ -1,0 +1,136 @@
+"""What ``sarlink design`` answers: typed records, and their JSON form."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+from typing import Any
+
+from sarlink.sizing.candidates import Candidate
+from sarlink.sizing.request import DesignRequest
+from sarlink.sizing.runs import Tally
+from sarlink.sizing.sequential import Verdict
+
+__all__ = ["DesignAnswer", "Estimate", "PlannerAnswer", "TeamSize", "Tuning"]
+
+GRID_RUNS = 2000
+"""Runs per grid point of the full sweep a design is compared with: the paper's."""
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """``P_s(t_d)`` of one candidate from its runs so far, with the 95 % Wilson interval."""
+
+    drones: int
+    value: float | int | None
+    """The planner's setting (``alpha``, ``nr``), or None."""
+    runs: int
+    successes: int
+    p: float
+    lo: float
+    hi: float
+    mission_time: float
+    """Mean notification time of the successful runs, s."""
+    verdict: Verdict
+
+    @classmethod
+    def of(cls, candidate: Candidate, tally: Tally, verdict: Verdict) -> Estimate:
+        lo, hi = tally.interval()
+        return cls(candidate.drones, candidate.value, tally.runs, tally.successes, tally.p, lo,
+                   hi, tally.mission_time, verdict)
+
+
+@dataclass(frozen=True)
+class TeamSize:
+    """One team size of one planner: its verdict and its most successful setting."""
+
+    drones: int
+    verdict: Verdict
+    best: Estimate
+    settings: int
+    """How many settings were tried at this size."""
+
+
+@dataclass(frozen=True)
+class Tuning:
+    """The planner's setting at its smallest team: the best value and the curve behind it."""
+
+    setting: str
+    best: Estimate
+    equivalent: tuple[float | int, ...]
+    """Values whose ``P_s`` is not shown to be below the best's (within the margin, or not
+    told apart at the cap or when the budget ran out), the best included."""
+    curve: tuple[Estimate, ...]
+    """Every value tried, in increasing order."""
+    ended_by: str
+    """``statistics``: one value is best or the rest are within the margin; ``cap``: every
+    value left had its most runs; ``budget``: the budget ran out."""
+
+
+@dataclass(frozen=True)
+class PlannerAnswer:
+    """One planner variant: its smallest team meeting the requirement, and its setting there."""
+
+    planner: str
+    label: str
+    fixed: dict[str, Any]
+    """The variant's extra mission parameters."""
+    status: str
+    """``reached``, ``not reachable`` (every team size fails) or ``undecided``."""
+    smallest: int | None
+    chosen: Estimate | None
+    """The candidate at the smallest team, at its best setting."""
+    undecided: tuple[int, ...]
+    """Smaller team sizes that stayed borderline or open: the true smallest may be one."""
+    team_sizes: tuple[TeamSize, ...]
+    tuning: Tuning | None
+
+
+@dataclass(frozen=True)
+class DesignAnswer:
+    request: DesignRequest
+    planners: tuple[PlannerAnswer, ...]
+    recommended: int | None
+    """Index in ``planners`` of the recommendation, or None if no planner reaches ``ps``."""
+    runs_used: int
+    """Runs the decisions rest on (stored earlier or simulated now)."""
+    runs_simulated: int
+    grid_points: int
+    """Candidates of the full grid at the finest setting resolution the design reached."""
+    ended_by: str
+    """``statistics``, or ``budget`` when ``max_runs`` stopped runs the search wanted."""
+
+    @property
+    def recommendation(self) -> PlannerAnswer | None:
+        return None if self.recommended is None else self.planners[self.recommended]
+
+    @property
+    def grid_runs(self) -> int:
+        """Runs of a full grid sweep at the paper's 2000 runs per point."""
+        return self.grid_points * GRID_RUNS
+
+    def to_json(self) -> dict[str, Any]:
+        """A JSON-ready dict (NaN as null)."""
+        data = {
+            "request": self.request.model_dump(mode="json"),
+            "recommendation": (None if self.recommendation is None
+                               else asdict(self.recommendation)),
+            "planners": [asdict(p) for p in self.planners],
+            "runs": {"used": self.runs_used, "simulated": self.runs_simulated,
+                     "reused": self.runs_used - self.runs_simulated,
+                     "budget": self.request.max_runs, "grid_points": self.grid_points,
+                     "grid_runs": self.grid_runs, "grid_runs_per_point": GRID_RUNS},
+            "ended_by": self.ended_by,
+        }
+        return _finite(data)
+
+
+def _finite(value: Any) -> Any:
+    """``value`` with NaN floats as None (JSON has no NaN)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite(v) for v in value]
+    return value

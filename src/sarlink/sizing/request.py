@@ -1,0 +1,128 @@
+"""What a mission planner asks: a mission, a deadline, a required success probability.
+
+Every field is checked when the request is made; errors raise :class:`ConfigError` naming the
+field and its allowed range (the CLI shows the field as its option, ``ps`` as ``--ps``).
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Any, Self
+
+from pydantic import Field, field_validator, model_validator
+
+from sarlink.config import Checked, ConfigError, Mission, param_groups
+from sarlink.planners import planner_names
+from sarlink.sizing.candidates import Candidate, Variant
+from sarlink.sizing.sequential import Schedule
+
+__all__ = ["DesignRequest"]
+
+_SET_BY_DESIGN = ("planner", "drones", "horizon", "stop")
+"""Mission parameters the design sets itself, so not options."""
+
+
+class DesignRequest(Checked):
+    """The question ``sarlink design`` answers, and how much work it may spend on it.
+
+    ``P_s(td)`` of each candidate must reach ``ps``, judged at ``confidence``: a team is said
+    to meet the requirement when its ``P_s`` is at least ``ps`` with that confidence.
+    """
+
+    mission: Mission = Field(default_factory=Mission,
+                             description="the base mission: area, BS, r_c, sensing, ...")
+    td: float = Field(gt=0, description="target duration t_d, s")
+    ps: float = Field(gt=0, lt=1, description="required P_s(t_d)")
+    planners: tuple[str, ...] = Field(default_factory=lambda: tuple(planner_names()),
+                                      description="planners to consider")
+    options: dict[str, list[Any]] = Field(
+        default_factory=dict,
+        description="extra flat mission parameters -> values; every planner is also tried "
+        "with each combination (e.g. on_detect = [continue, report])")
+    max_drones: int = Field(22, ge=1, le=1000, description="largest team considered")
+    confidence: float = Field(0.95, gt=0.5, lt=1,
+                              description="two-sided confidence of the interval on P_s")
+    first_runs: int = Field(50, ge=10, description="runs of a candidate at its first look")
+    candidate_runs: int = Field(6400, ge=10,
+                                description="most runs of one candidate (the last look)")
+    max_runs: int = Field(400_000, ge=1, description="budget: runs used by the whole design")
+    margin: float = Field(0.01, gt=0, lt=1, description="settings whose P_s is shown to be "
+                          "within this margin of the best are equally good")
+    alpha_step: float = Field(0.1, gt=0, le=0.5, description="ConCov alpha grid spacing")
+    alpha_tol: float = Field(0.025, gt=0, le=0.5,
+                             description="finest alpha spacing of the refinement")
+    seed: int = Field(2024, ge=0, description="seed of every run: run k of every candidate "
+                      "has the same target")
+
+    @field_validator("planners")
+    @classmethod
+    def _known_planners(cls, planners: tuple[str, ...]) -> tuple[str, ...]:
+        if not planners:
+            raise ValueError(f"name at least one planner of {', '.join(planner_names())}")
+        for name in planners:
+            if name not in planner_names():
+                raise ValueError(f"unknown planner {name!r}; known: {', '.join(planner_names())}")
+        if len(set(planners)) < len(planners):
+            raise ValueError("a planner is named twice")
+        return planners
+
+    @field_validator("options")
+    @classmethod
+    def _known_options(cls, options: dict[str, list[Any]]) -> dict[str, list[Any]]:
+        known = param_groups()
+        for name, values in options.items():
+            if name in _SET_BY_DESIGN:
+                raise ValueError(f"{name!r} is set by the design itself, not an option")
+            if name not in known:
+                raise ValueError(f"unknown mission parameter {name!r}; "
+                                 f"known: {', '.join(sorted(set(known) - set(_SET_BY_DESIGN)))}")
+            if not values:
+                raise ValueError(f"{name!r} lists no values")
+        return options
+
+    @field_validator("alpha_step")
+    @classmethod
+    def _divides_one(cls, step: float) -> float:
+        if abs(1 / step - round(1 / step)) > 1e-9:
+            raise ValueError(f"must divide 1 into equal parts (0.1, 0.125, 0.25, ...), got {step}")
+        return step
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Self:
+        horizon = self.mission.timing.horizon
+        if self.td > horizon:
+            raise ValueError(f"td: {self.td:g} s is beyond the mission's horizon of "
+                             f"{horizon:g} s (timing.horizon)")
+        if self.first_runs > self.candidate_runs:
+            raise ValueError(f"first_runs: {self.first_runs} exceeds candidate_runs "
+                             f"({self.candidate_runs})")
+        try:
+            self.base()
+        except ConfigError as exc:
+            raise ValueError(f"td: {self.td:g} s does not fit the mission: {exc}") from None
+        for variant in self.variants():  # every combination must be a valid mission
+            try:
+                Candidate(variant, 1).mission(self.mission)
+            except ConfigError as exc:
+                raise ValueError(f"options: {variant.label}: {exc}") from None
+        return self
+
+    def base(self) -> Mission:
+        """The mission every candidate starts from: simulated to ``td`` and no further, and
+        only until the BS is notified, the one event ``P_s(td)`` reads."""
+        return self.mission.replace(horizon=self.td, stop="notified")
+
+    def variants(self) -> list[Variant]:
+        """Every planner with every combination of the options, in request order."""
+        names = list(self.options)
+        return [Variant(planner, tuple(zip(names, values, strict=True)))
+                for planner in self.planners
+                for values in itertools.product(*self.options.values())]
+
+    def schedule(self) -> Schedule:
+        return Schedule(self.first_runs, self.candidate_runs)
+
+    @property
+    def error(self) -> float:
+        """The one-sided error of the two-sided ``confidence`` interval (0.025 at 95 %)."""
+        return (1 - self.confidence) / 2

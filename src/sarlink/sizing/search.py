@@ -1,0 +1,322 @@
+"""The adaptive search: which candidates get runs, and when the answer is known.
+
+Two phases, both spending runs in rounds (one pool of workers per round; every candidate of a
+round grows to its next look of the :class:`~sarlink.sizing.sequential.Schedule`).
+
+1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
+   (1, 2, 4, ..., the largest); once a size meets the requirement, or the ladder is decided,
+   every smaller size is opened. A size meets when one of its settings does; it fails when all
+   do. Sizes above the smallest that meets are never run again. The ladder only orders the
+   work: the answer does not assume that ``P_s`` grows with the team.
+2. **Best setting.** At the smallest team of a tunable planner, its settings race: all grow
+   together, a setting shown worse than the current best (exact McNemar test on the common
+   runs) drops out, and the race ends when one is left or the rest are shown within ``margin``
+   of the best. A continuous setting is then refined: the two midpoints beside the best join
+   the race, halving the spacing down to ``alpha_tol``.
+
+Error control (Bonferroni, each a union bound): with ``K`` looks and ``G`` settings that can
+ever be tried at a team size, "meets" is judged at error ``δ/(K·G)`` per setting and look,
+"fails" at ``δ/K``, and eliminations at ``δ/(K·(G−1))``, where ``δ`` is the one-sided error of
+the requested confidence (0.025 at 95 %). So each team size of each planner is misjudged with
+probability at most ``δ``, and at the tuned size the best setting is dropped with probability
+at most ``δ``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+from sarlink.config import Mission
+from sarlink.sizing.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
+from sarlink.sizing.candidates import Candidate, Variant, refinements
+from sarlink.sizing.request import DesignRequest
+from sarlink.sizing.runs import Runs, Tally
+from sarlink.sizing.sequential import Schedule, Verdict, not_worse_by, verdict, worse
+
+__all__ = ["search"]
+
+Progress = Callable[[int, int, int], None]
+"""Called after each round with (candidates decided, candidates opened, runs used)."""
+
+
+@dataclass
+class _Arm:
+    """One candidate in the search: its mission and what its runs say so far."""
+
+    candidate: Candidate
+    mission: Mission
+    verdict: Verdict = Verdict.OPEN
+
+
+@dataclass
+class _Cell:
+    """One team size of one variant: its settings' arms and the errors they are judged at."""
+
+    drones: int
+    arms: list[_Arm]
+    meets_error: float
+    fails_error: float
+
+    @property
+    def verdict(self) -> Verdict:
+        verdicts = {arm.verdict for arm in self.arms}
+        if Verdict.MEETS in verdicts:
+            return Verdict.MEETS
+        if verdicts == {Verdict.FAILS}:
+            return Verdict.FAILS
+        return Verdict.OPEN if Verdict.OPEN in verdicts else Verdict.BORDERLINE
+
+
+def _value(arm: _Arm) -> float | int:
+    """The setting value of an arm of a tunable variant."""
+    value = arm.candidate.value
+    assert value is not None
+    return value
+
+
+def _ladder(largest: int) -> list[int]:
+    sizes = [1]
+    while sizes[-1] * 2 < largest:
+        sizes.append(sizes[-1] * 2)
+    return sorted({*sizes, largest})
+
+
+@dataclass
+class _Search:
+    request: DesignRequest
+    runs: Runs
+    progress: Progress | None
+    schedule: Schedule = field(init=False)
+    base: Mission = field(init=False)
+    cells: dict[Variant, dict[int, _Cell]] = field(default_factory=dict)
+    budget_hit: bool = False
+
+    def __post_init__(self) -> None:
+        self.schedule = self.request.schedule()
+        self.base = self.request.base()
+        self.cells = {variant: {} for variant in self.request.variants()}
+
+    # -- bookkeeping --------------------------------------------------------------------------
+
+    @property
+    def looks(self) -> int:
+        return len(self.schedule.looks)
+
+    def tally(self, arm: _Arm) -> Tally:
+        return self.runs.tally(arm.mission)
+
+    def arms(self) -> list[_Arm]:
+        return [arm for cells in self.cells.values() for cell in cells.values()
+                for arm in cell.arms]
+
+    def used(self) -> int:
+        return sum(self.tally(arm).runs for arm in self.arms())
+
+    def settings(self, variant: Variant, drones: int) -> int:
+        """How many settings can ever be tried at this size (the Bonferroni divisor)."""
+        setting = variant.setting
+        r = self.request
+        return 1 if setting is None else setting.size(drones, r.alpha_step, r.alpha_tol)
+
+    def cell(self, variant: Variant, drones: int) -> _Cell:
+        cells = self.cells[variant]
+        if drones not in cells:
+            setting = variant.setting
+            values: Sequence[float | int | None] = (
+                [None] if setting is None else setting.grid(drones, self.request.alpha_step))
+            arms = [self.arm(Candidate(variant, drones, v)) for v in values]
+            error = self.request.error / self.looks
+            cells[drones] = _Cell(drones, arms, error / self.settings(variant, drones), error)
+        return cells[drones]
+
+    def arm(self, candidate: Candidate) -> _Arm:
+        return _Arm(candidate, candidate.mission(self.base))
+
+    def spend(self, wanted: Sequence[tuple[_Arm, int]]) -> bool:
+        """Grow arms to the run counts wanted, in order, while the budget lasts; False when
+        the budget stopped any (then nothing after it in the order runs either)."""
+        left = self.request.max_runs - self.used()
+        allowed = []
+        for arm, runs in wanted:
+            extra = runs - self.tally(arm).runs
+            if extra > left:
+                self.budget_hit = True
+                break
+            allowed.append((arm.mission, runs))
+            left -= extra
+        self.runs.grow(allowed)
+        if self.progress is not None:
+            arms = self.arms()
+            self.progress(sum(a.verdict is not Verdict.OPEN for a in arms), len(arms),
+                          self.used())
+        return len(allowed) == len(wanted)
+
+    def judge(self, arm: _Arm, cell: _Cell) -> None:
+        tally = self.tally(arm)
+        arm.verdict = verdict(tally.successes, tally.runs, self.request.ps,
+                              meets_error=cell.meets_error, fails_error=cell.fails_error,
+                              final=self.schedule.after(tally.runs) is None)
+
+    # -- phase 1: the smallest team -----------------------------------------------------------
+
+    def smallest(self, variant: Variant) -> int | None:
+        meets = [n for n, c in self.cells[variant].items() if c.verdict is Verdict.MEETS]
+        return min(meets, default=None)
+
+    def active(self, variant: Variant) -> list[_Cell]:
+        """The open cells of ``variant`` worth runs now (see the module docstring)."""
+        largest = self.request.max_drones
+        smallest = self.smallest(variant)
+        below = range(1, largest + 1 if smallest is None else smallest)
+        probes = [n for n in _ladder(largest) if n in below]
+        ladder_done = all(self.cell(variant, n).verdict is not Verdict.OPEN for n in probes)
+        sizes = below if smallest is not None or ladder_done else probes
+        return [c for n in sizes if (c := self.cell(variant, n)).verdict is Verdict.OPEN]
+
+    def find_smallest(self) -> None:
+        order = {variant: i for i, variant in enumerate(self.cells)}
+        while True:
+            wanted = []
+            for variant in self.cells:
+                for cell in self.active(variant):
+                    for arm in cell.arms:
+                        nxt = self.schedule.after(self.tally(arm).runs)
+                        if arm.verdict is Verdict.OPEN and nxt is not None:
+                            wanted.append((cell, arm, nxt))
+            if not wanted:
+                return
+            wanted.sort(key=lambda w: (w[0].drones, order[w[1].candidate.variant]))
+            complete = self.spend([(arm, n) for _, arm, n in wanted])
+            for cell, arm, _ in wanted:
+                self.judge(arm, cell)
+            if not complete:
+                return
+
+    # -- phase 2: the best setting ------------------------------------------------------------
+
+    def tune(self, variant: Variant, cell: _Cell) -> Tuning:
+        setting = variant.setting
+        assert setting is not None
+        size = self.settings(variant, cell.drones)
+        error = self.request.error / (self.looks * max(size - 1, 1))
+        step = self.request.alpha_step
+        halvings = refinements(step, self.request.alpha_tol) if setting.continuous else 0
+        # a setting judged to fail cannot be the best of a size that meets
+        survivors = [a for a in cell.arms if a.verdict is not Verdict.FAILS]
+        while True:
+            runs = max(self.tally(a).runs for a in survivors)
+            lagging = [(a, runs) for a in survivors if self.tally(a).runs < runs]
+            if lagging:
+                if not self.spend(lagging):
+                    ended_by = "budget"
+                    break
+                continue
+            best = self.best(survivors)
+            won = self.tally(best).success
+            survivors = [a for a in survivors
+                         if a is best or not worse(self.tally(a).success, won, error)]
+            settled = all(a is best or not_worse_by(self.tally(a).success, won,
+                                                    self.request.margin, error)
+                          for a in survivors)
+            if settled and halvings:
+                halvings -= 1
+                step /= 2
+                survivors += self.refine(cell, best, step)
+                continue
+            if settled:
+                ended_by = "statistics"
+                break
+            nxt = self.schedule.after(runs)
+            if nxt is None:
+                ended_by = "cap"
+                break
+            if not self.spend([(a, nxt) for a in survivors]):
+                ended_by = "budget"
+                break
+        for arm in cell.arms:
+            self.judge(arm, cell)
+        best = self.best(survivors)
+        return Tuning(setting.name, self.estimate(best),
+                      tuple(sorted(map(_value, survivors))),
+                      tuple(self.estimate(a) for a in sorted(cell.arms, key=_value)), ended_by)
+
+    def best(self, arms: Sequence[_Arm]) -> _Arm:
+        """The most successful arm on the runs all of them have (ties: shorter mission)."""
+        common = min(self.tally(a).runs for a in arms)
+
+        def key(arm: _Arm) -> tuple[float, float]:
+            tally = self.tally(arm).first(common)
+            return (tally.p, -tally.mission_time if tally.successes else float("-inf"))
+
+        return max(arms, key=key)
+
+    def refine(self, cell: _Cell, best: _Arm, step: float) -> list[_Arm]:
+        """New arms halfway between the best value and its neighbours, within [0, 1]."""
+        centre = _value(best)
+        known = {_value(a) for a in cell.arms}
+        new = [self.arm(Candidate(best.candidate.variant, cell.drones, round(v, 12)))
+               for v in (centre - step, centre + step)
+               if 0 <= v <= 1 and all(abs(v - k) > 1e-9 for k in known)]
+        cell.arms += new
+        return new
+
+    # -- the answer ---------------------------------------------------------------------------
+
+    def estimate(self, arm: _Arm) -> Estimate:
+        return Estimate.of(arm.candidate, self.tally(arm), arm.verdict)
+
+    def answer(self, variant: Variant, tuning: Tuning | None) -> PlannerAnswer:
+        cells = self.cells[variant]
+        smallest = self.smallest(variant)
+        sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)), len(c.arms))
+                      for n, c in sorted(cells.items())
+                      if any(self.tally(a).runs for a in c.arms))
+        limit = self.request.max_drones + 1 if smallest is None else smallest
+        undecided = tuple(n for n in range(1, limit)
+                          if n not in cells or cells[n].verdict is not Verdict.FAILS)
+        chosen = None
+        if smallest is not None:
+            chosen = (self.estimate(cells[smallest].arms[0]) if tuning is None
+                      else tuning.best)
+            status = "reached"
+        else:
+            status = "undecided" if undecided else "not reachable"
+        return PlannerAnswer(variant.planner, variant.label, dict(variant.fixed), status,
+                             smallest, chosen, undecided, sizes, tuning)
+
+    def most_successful(self, cell: _Cell) -> _Arm:
+        """The arm of ``cell`` with the highest ``P_s`` estimate, each on all its own runs."""
+        return max((a for a in cell.arms if self.tally(a).runs),
+                   key=lambda a: self.tally(a).p)
+
+
+def _grid_points(request: DesignRequest) -> int:
+    """Candidates of a full grid at the finest setting spacing the design can reach."""
+    finest = request.alpha_step / 2 ** refinements(request.alpha_step, request.alpha_tol)
+    total = 0
+    for variant in request.variants():
+        for drones in range(1, request.max_drones + 1):
+            setting = variant.setting
+            total += 1 if setting is None else len(setting.grid(drones, finest))
+    return total
+
+
+def search(request: DesignRequest, runs: Runs, progress: Progress | None = None
+           ) -> DesignAnswer:
+    """Answer ``request``, running what it needs through ``runs``."""
+    state = _Search(request, runs, progress)
+    state.find_smallest()
+    tunings = {v: state.tune(v, state.cells[v][n]) for v in state.cells
+               if v.setting is not None and (n := state.smallest(v)) is not None}
+    planners = tuple(state.answer(v, tunings.get(v)) for v in state.cells)
+    reached = [i for i, p in enumerate(planners) if p.chosen is not None]
+
+    def rank(i: int) -> tuple[int, float, float]:
+        chosen = planners[i].chosen
+        assert chosen is not None
+        return (chosen.drones, -chosen.p, chosen.mission_time)
+
+    return DesignAnswer(
+        request, planners, min(reached, key=rank, default=None), state.used(),
+        runs.simulated, _grid_points(request), "budget" if state.budget_hit else "statistics")
