@@ -25,7 +25,7 @@ from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.params import LANDED, SEARCHING, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "25acc9e95d578ce4"
+SOURCE_DIGEST = "4c336b383075d7e2"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
