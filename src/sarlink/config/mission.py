@@ -57,6 +57,17 @@ class Team(Checked):
     nr: int = Field(6, ge=1, strict=True,
                     description="mTSP-ConB: drones reserved for the mTSP plan")
     flight_time: float = Field(4000.0, gt=0, description="flight budget T_max, s")
+    on_detect: Literal["continue", "report"] = Field(
+        "continue",
+        description="continue: the paper, drones keep their plan after learning where the "
+        "target is; report: such a drone flies straight to the BS until it is notified, then "
+        "resumes (beyond the paper; docs/model.md)",
+    )
+    reporters: Literal["knowers", "detector"] = Field(
+        "knowers",
+        description="with on_detect = report, who reports: every drone that knows the "
+        "target's location, or only the first detector",
+    )
 
     @field_validator("planner")
     @classmethod

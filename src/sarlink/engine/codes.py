@@ -18,6 +18,7 @@ class Mode(IntEnum):
     SEARCHING = 0  # distributed planner steering, or flying its mTSP route
     RETURNING = 1  # out of budget: flying straight home
     LANDED = 2  # at the BS; still relays
+    REPORTING = 3  # knows the target, the BS does not: flying straight to the BS to tell it
 
 
 class Look(IntEnum):
@@ -39,3 +40,23 @@ class Stop(IntEnum):
 
 
 STOP_CODES = {"horizon": Stop.HORIZON, "detected": Stop.DETECTED, "notified": Stop.NOTIFIED}
+
+
+class OnDetect(IntEnum):
+    """What a drone does once it knows the target's location and the BS does not."""
+
+    CONTINUE = 0  # the paper: keep flying its plan
+    REPORT = 1  # fly straight to the BS until it is notified, then resume
+
+
+ON_DETECT_CODES = {"continue": OnDetect.CONTINUE, "report": OnDetect.REPORT}
+
+
+class Reporters(IntEnum):
+    """Which drones report when ``on_detect = report``."""
+
+    KNOWERS = 0  # every drone that knows the target's location
+    DETECTOR = 1  # only the drone that detected the target first
+
+
+REPORTERS_CODES = {"knowers": Reporters.KNOWERS, "detector": Reporters.DETECTOR}

@@ -22,10 +22,17 @@ from numba import njit
 
 from sarlink.engine import graph, motion, radio, records, rules, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
-from sarlink.engine.params import LANDED, SEARCHING, STOP_DETECTED, STOP_NOTIFIED, Params
+from sarlink.engine.params import (
+    LANDED,
+    REPORT,
+    SEARCHING,
+    STOP_DETECTED,
+    STOP_NOTIFIED,
+    Params,
+)
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "4c336b383075d7e2"
+SOURCE_DIGEST = "28a7fe386bc0a869"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
@@ -74,6 +81,8 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
     con_x, con_y = np.zeros(n), np.zeros(n)  # ConB's directions of the deciding drones
     deciding = np.zeros(n, dtype=np.bool_)
+    leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
+    rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
@@ -127,6 +136,9 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
             break
 
         # ---- decide: every drone from the state before anyone turns ----
+        if p.on_detect == REPORT and t_det >= 0.0:
+            motion.report(k, p, t_not >= 0.0, detector, knows, mode, on_route, px, py, leave_x,
+                          leave_y, rejoin, last_change)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
         if conb and any_deciding:
@@ -138,7 +150,8 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
         hx[:] = nhx
         hy[:] = nhy
         # ---- move ----
-        motion.move(p, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end)
+        motion.move(p, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y,
+                    rejoin)
 
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan

@@ -9,7 +9,14 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine.geometry import inside, unit
-from sarlink.engine.params import LANDED, RETURNING, SEARCHING, Params
+from sarlink.engine.params import (
+    DETECTOR_ONLY,
+    LANDED,
+    REPORTING,
+    RETURNING,
+    SEARCHING,
+    Params,
+)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -23,6 +30,42 @@ def farthest_home(p: Params) -> float:
     return home_max
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def home_due(p: Params, t: float, x: float, y: float) -> tuple[bool, float, float]:
+    """Whether a drone at ``(x, y)`` must turn home at time ``t`` (its remaining budget minus
+    the straight flight home is under two steps), and the vector to the BS."""
+    hdx, hdy = p.bs_x - x, p.bs_y - y
+    home = math.sqrt(hdx * hdx + hdy * hdy)
+    return (p.flight_time - t) - home / p.speed < 2.0 * p.dt, hdx, hdy
+
+
+@njit(cache=True, error_model="numpy")
+def report(k: int, p: Params, notified: bool, detector: int, knows: np.ndarray,
+           mode: np.ndarray, on_route: np.ndarray, px: np.ndarray, py: np.ndarray,
+           leave_x: np.ndarray, leave_y: np.ndarray, rejoin: np.ndarray,
+           last_change: np.ndarray) -> None:
+    """``on_detect = report``: who starts and who stops flying to tell the BS at step ``k``.
+
+    While the BS has not been notified, a searching drone that knows the target's location
+    (every knower, or only the first detector) starts reporting; a route drone remembers
+    where it left its tour. Once the BS is notified every reporting drone resumes: a
+    distributed drone decides under its rule at once, a route drone flies back to where it
+    left its tour (:func:`move`).
+    """
+    for i in range(knows.shape[0]):
+        if notified:
+            if mode[i] == REPORTING:
+                mode[i] = SEARCHING
+                if not on_route[i]:
+                    last_change[i] = k - p.ts_steps  # due for a direction update now
+        elif (mode[i] == SEARCHING and knows[i]
+              and (p.reporters != DETECTOR_ONLY or i == detector)):
+            mode[i] = REPORTING
+            if on_route[i]:
+                leave_x[i], leave_y[i] = px[i], py[i]
+                rejoin[i] = True
+
+
 @njit(cache=True, error_model="numpy")
 def schedule(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray,
              hy: np.ndarray, mode: np.ndarray, on_route: np.ndarray, last_change: np.ndarray,
@@ -31,20 +74,26 @@ def schedule(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx
 
     A drone turns home at the first step at which its remaining budget minus the straight
     flight home is under two steps (``homing``: that step may have come for some drone). A
-    drone updates its direction every ``t_s`` since its last change. ``nhx, nhy`` start as
-    the current headings; returns whether any drone decides.
+    drone updates its direction every ``t_s`` since its last change. A reporting drone heads
+    for the BS, and a distributed one whose budget is due simply goes home. ``nhx, nhy``
+    start as the current headings; returns whether any drone decides.
     """
     any_deciding = False
     t = k * p.dt
     for i in range(hx.shape[0]):
         nhx[i], nhy[i] = hx[i], hy[i]
         deciding[i] = False
+        if mode[i] == REPORTING:
+            due, hdx, hdy = home_due(p, t, px[i], py[i])
+            if due and homing and not on_route[i]:
+                mode[i] = RETURNING
+            nhx[i], nhy[i] = unit(hdx, hdy, hx[i], hy[i])
+            continue
         if on_route[i] or mode[i] != SEARCHING:
             continue
         if homing:
-            hdx, hdy = p.bs_x - px[i], p.bs_y - py[i]
-            home = math.sqrt(hdx * hdx + hdy * hdy)
-            if (p.flight_time - t) - home / p.speed < 2.0 * p.dt:
+            due, hdx, hdy = home_due(p, t, px[i], py[i])
+            if due:
                 mode[i] = RETURNING
                 nhx[i], nhy[i] = unit(hdx, hdy, hx[i], hy[i])
                 continue
@@ -122,14 +171,36 @@ def fly_route(
 @njit(cache=True, error_model="numpy")
 def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
          mode: np.ndarray, on_route: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
-         wp_end: np.ndarray) -> None:
-    """Move every drone ``V dt``: along its route, home (landing on arrival) or straight on."""
+         wp_end: np.ndarray, leave_x: np.ndarray, leave_y: np.ndarray,
+         rejoin: np.ndarray) -> None:
+    """Move every drone ``V dt``: along its route (back to where it left it first, after
+    reporting), home (landing on arrival), to the BS to report (waiting there), or on."""
     step = p.speed * p.dt
     for i in range(hx.shape[0]):
         if mode[i] == LANDED:
             continue
-        if on_route[i]:
-            fly_route(i, px, py, hx, hy, mode, wp, wp_next, wp_end, step)
+        if mode[i] == REPORTING:
+            dx, dy = p.bs_x - px[i], p.bs_y - py[i]
+            if dx * dx + dy * dy <= step * step:
+                px[i], py[i] = p.bs_x, p.bs_y
+            else:
+                px[i] += step * hx[i]
+                py[i] += step * hy[i]
+        elif on_route[i]:
+            travel = step
+            if rejoin[i]:
+                dx, dy = leave_x[i] - px[i], leave_y[i] - py[i]
+                d = math.sqrt(dx * dx + dy * dy)
+                if d > travel:
+                    px[i] += travel * dx / d
+                    py[i] += travel * dy / d
+                    hx[i], hy[i] = dx / d, dy / d
+                    continue
+                px[i], py[i] = leave_x[i], leave_y[i]
+                rejoin[i] = False
+                travel -= d
+            if travel > 0.0:
+                fly_route(i, px, py, hx, hy, mode, wp, wp_next, wp_end, travel)
         elif mode[i] == RETURNING:
             dx, dy = p.bs_x - px[i], p.bs_y - py[i]
             if dx * dx + dy * dy <= step * step:

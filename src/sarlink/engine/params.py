@@ -4,11 +4,14 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from sarlink.engine.codes import Look, Mode, Rule, Stop
+from sarlink.engine.codes import Look, Mode, OnDetect, Reporters, Rule, Stop
 
 SEARCHING = int(Mode.SEARCHING)
 RETURNING = int(Mode.RETURNING)
 LANDED = int(Mode.LANDED)
+REPORTING = int(Mode.REPORTING)
+REPORT = int(OnDetect.REPORT)
+DETECTOR_ONLY = int(Reporters.DETECTOR)
 COVB = int(Rule.COVB)
 CONB = int(Rule.CONB)
 CONCOV = int(Rule.CONCOV)
@@ -40,4 +43,6 @@ class Params(NamedTuple):
     n_steps: int
     stop: int
     record: bool
+    on_detect: int
+    reporters: int
 

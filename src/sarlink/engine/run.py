@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine.codes import LOOK_CODES, STOP_CODES
+from sarlink.engine.codes import LOOK_CODES, ON_DETECT_CODES, REPORTERS_CODES, STOP_CODES
 from sarlink.engine.kernel import simulate_kernel
 from sarlink.engine.params import Params
 from sarlink.engine.records import RunRecord
@@ -50,6 +50,8 @@ class Prepared:
             altitude=mission.channel.altitude, dt=t.dt, ts_steps=mission.steps(t.ts),
             coherence_steps=mission.steps(mission.coherence), n_steps=mission.n_steps,
             stop=int(STOP_CODES[t.stop]), record=False,
+            on_detect=int(ON_DETECT_CODES[mission.team.on_detect]),
+            reporters=int(REPORTERS_CODES[mission.team.reporters]),
         )
         return cls(mission=mission, params=params, distributed=steering.distributed(n),
                    waypoints=waypoints, wp_start=wp_start, cp_steps=cp_steps)
