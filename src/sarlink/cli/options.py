@@ -20,4 +20,6 @@ Look = Annotated[str | None, typer.Option(help="per-pass or per-period")]
 Sigma = Annotated[float | None, typer.Option(help="shadowing sigma, dB")]
 PathlossExponent = Annotated[float | None, typer.Option(help="path-loss exponent n")]
 Stop = Annotated[str | None, typer.Option(help="end the run at: horizon, detected, notified")]
+OnDetect = Annotated[str | None, typer.Option(
+    help="after learning where the target is: continue (the paper) or report (fly to the BS)")]
 Config = Annotated[Path | None, typer.Option(help="mission TOML; flags override it")]

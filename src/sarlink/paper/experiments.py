@@ -24,6 +24,7 @@ from sarlink.metrics import success_curve, summarize
 from sarlink.planners import planner_names
 
 __all__ = [
+    "BEYOND",
     "CURVE_TDS",
     "DRONES",
     "EXPERIMENTS",
@@ -129,10 +130,28 @@ def _shadowing_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
     return {"shadowing": summarize(runs, td=TD_LONG, by=[*_BY, "sigma"])}
 
 
+def _report(runs: int) -> Experiment:
+    """Beyond the paper: the main grid with drones that fly to tell the BS (``on_detect``)."""
+    return Experiment(
+        name="Beyond: on_detect = report", seed=SEED, runs=runs,
+        mission=Mission.build(horizon=TD_LONG, on_detect="report"),
+        grid={"planner": planner_names(), "drones": list(DRONES), "rc": list(RANGES)},
+    )
+
+
+def _report_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"report": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=_BY),
+            "report_curve": success_curve(runs, CURVE_TDS, by=_BY)}
+
+
+BEYOND = 8
+"""The number of the figure beyond the paper's seven: its planners with drones that report."""
+
 EXPERIMENTS = {e.name: e for e in (
-    PaperExperiment("main", (2, 3, 4, 5, 6), _main, _main_tables),
+    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND), _main, _main_tables),
     PaperExperiment("miss", (7,), _miss, _miss_tables),
     PaperExperiment("shadowing", (7,), _shadowing, _shadowing_tables),
+    PaperExperiment("report", (BEYOND,), _report, _report_tables),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`) and ``curve`` (``success_curve`` at

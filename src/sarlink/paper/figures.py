@@ -28,6 +28,7 @@ from matplotlib.ticker import PercentFormatter
 
 from sarlink.metrics import MEASURES, Measure
 from sarlink.paper.experiments import (
+    BEYOND,
     DRONES,
     FIG2_DRONES,
     FIG5_RANGES,
@@ -40,7 +41,7 @@ from sarlink.paper.experiments import (
 from sarlink.planners import get_planner, planner_names
 
 __all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
-           "save"]
+           "fig8", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
@@ -78,7 +79,7 @@ def _header(measure: Measure) -> str:
 
 
 _KEYS = {"rc": "r_c (m)", "drones": "N_m", "td": "t_d (s)", "p_miss": "p_miss",
-         "planner": "planner"}
+         "planner": "planner", "on_detect": "on detection"}
 
 
 def _label(planner: str) -> str:
@@ -126,13 +127,14 @@ def _legend(fig: Figure, planners: Sequence[str]) -> None:
 
 
 def _lines(ax: Axes, rows: pd.DataFrame, x: str, measure: Measure, planners: Sequence[str], *,
-           dodge: float = 0.0, markevery: int = 1) -> None:
+           dodge: float = 0.0, markevery: int = 1, faint: bool = False) -> None:
     """One line per planner of ``measure`` against column ``x``, with its band.
 
     Planners often coincide (all at P = 1; mTSP-ConB on mTSP up to N_r drones). So that none
     hides another, ``dodge`` shifts each planner's points sideways by that much per place in
     ``planners`` (the figure's legend), and with ``markevery`` > 1 each planner marks a
-    different subset of points.
+    different subset of points. ``faint`` lines are dashed, unmarked and without bands: a
+    reference drawn beside the main lines.
     """
     middle = (len(planners) - 1) / 2
     for i, planner in enumerate(planners):
@@ -142,6 +144,9 @@ def _lines(ax: Axes, rows: pd.DataFrame, x: str, measure: Measure, planners: Seq
         style = get_planner(planner)
         xs = sub[x].to_numpy(dtype=float) + dodge * (i - middle)
         value, lo, hi = _band(measure, sub)
+        if faint:
+            ax.plot(xs, value, color=style.colour, ls="--", lw=0.9, alpha=0.7)
+            continue
         ax.plot(xs, value, color=style.colour, marker=style.marker,
                 markevery=(i % markevery, markevery), label=style.label)
         ax.fill_between(xs, lo, hi, color=style.colour, alpha=_BAND, lw=0)
@@ -281,6 +286,39 @@ def fig7(miss: pd.DataFrame, shadowing: pd.DataFrame, fig: Figure | None = None)
     return fig
 
 
+@_style()
+def fig8(curve: pd.DataFrame, main: pd.DataFrame, report_curve: pd.DataFrame,
+         report: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Beyond the paper: the planners with drones that fly to tell the BS (solid, with bands)
+    beside the paper's behaviour (dashed), for r_c = 500 and 1000 m: (a) P_s against t_d for
+    N_m = 10 (as Fig. 2), (b) P_s against N_m at t_d = 2000 s (as Fig. 3), (c) mission time
+    and (d) search share against N_m at t_d = 4000 s (as Fig. 4)."""
+    ranges = FIG5_RANGES
+    fig, axes = _axes(fig, 4, len(ranges), sharey="row")
+    planners = _planners(report)
+    for ax, rc in zip(axes[0], ranges, strict=True):
+        for table, faint in ((curve, True), (report_curve, False)):
+            sub = table[(table["drones"] == 10) & (table["rc"] == rc)]
+            _lines(ax, sub, "td", P_S, planners, markevery=5, faint=faint)
+        ax.set(title=f"$N_m$ = 10, $r_c$ = {rc:g} m", xlabel="target duration $t_d$ (s)",
+               xlim=(0, TD_LONG), xticks=np.arange(0, TD_LONG + 1, 1000))
+    for row, measure, td in ((axes[1], P_S, TD_FIG3), (axes[2], MISSION_TIME, TD_LONG),
+                             (axes[3], SEARCH_SHARE, TD_LONG)):
+        for ax, rc in zip(row, ranges, strict=True):
+            for table, faint in ((main, True), (report, False)):
+                sub = _at(table, td)
+                _lines(ax, sub[sub["rc"] == rc], "drones", measure, planners, dodge=0.2,
+                       faint=faint)
+            ax.set(title=f"$r_c$ = {rc:g} m, $t_d$ = {td:g} s",
+                   xlabel="number of drones $N_m$", xticks=DRONES[::2])
+    for tag, row in zip("abcd", axes, strict=True):
+        row[0].set_ylabel(f"({tag}) {row[0].get_ylabel()}")
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    _legend(fig, planners)
+    return fig
+
+
 def save(fig: Figure, folder: Path, name: str) -> list[Path]:
     """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -298,7 +336,8 @@ def _values(rows: pd.DataFrame, keys: Sequence[str], measures: Sequence[Measure]
             ) -> pd.DataFrame:
     """The plotted rows as text: the keys, then each measure with its interval."""
     rows = rows.sort_values(keys, key=_legend_order)
-    out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else "{:g}".format)
+    out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else str
+                                              if k == "on_detect" else "{:g}".format)
                         for k in keys})
     for measure in measures:
         out[_header(measure)] = [measure.text(r) for _, r in rows.iterrows()]
@@ -336,6 +375,14 @@ def _fig7_values(miss: pd.DataFrame, shadowing: pd.DataFrame) -> list[tuple[str,
             ("(b) shadowing", _values(_at(shadowing, TD_LONG), _VERSUS_KEYS, [IMMEDIATE]))]
 
 
+def _fig8_values(curve: pd.DataFrame, main: pd.DataFrame, report_curve: pd.DataFrame,
+                 report: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    both = pd.concat([main.assign(on_detect="continue"), report.assign(on_detect="report")])
+    rows = both[both["rc"].isin(FIG5_RANGES) & both["td"].isin([TD_SHORT, TD_FIG3])]
+    return [("P_s with and without reporting", _values(
+        rows, ["rc", "td", "planner", "drones", "on_detect"], [P_S]))]
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """A paper figure: what it shows, the summary tables it needs, how to draw it and the
@@ -370,5 +417,11 @@ FIGURES = {f.number: f for f in (
                f"r_c = 500 m, t_d = {TD_SHORT:g} s; (b) immediate notification against the "
                f"number of drones under log-normal shadowing (σ = {SIGMA:g} dB), r_c = 1000 m, "
                f"t_d = {TD_LONG:g} s.", ("miss", "shadowing"), fig7, _fig7_values),
+    FigureSpec(BEYOND, "Beyond the paper: drones that fly to tell the BS once they know where "
+               "the target is (on_detect = report; solid, with 95% bands) beside the paper's "
+               "behaviour (dashed): (a) P_s against t_d, N_m = 10; (b) P_s against N_m, "
+               f"t_d = {TD_FIG3:g} s; (c) mission time and (d) search share against N_m, "
+               f"t_d = {TD_LONG:g} s.", ("curve", "main", "report_curve", "report"), fig8,
+               _fig8_values),
 )}
-"""Every figure by its number in the paper."""
+"""Every figure by its number in the paper, and :data:`BEYOND` after them."""

@@ -7,6 +7,7 @@ import numpy as np
 from matplotlib.patches import Circle, Rectangle
 
 from sarlink.config import Mission
+from sarlink.engine.codes import Mode
 from sarlink.result import RunResult
 
 
@@ -28,6 +29,12 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
     colors = plt.get_cmap("tab20")(np.linspace(0, 1, traj.positions.shape[1], endpoint=False))
     for i, color in enumerate(colors):
         ax.plot(traj.positions[:, i, 0], traj.positions[:, i, 1], lw=0.7, color=color, alpha=0.8)
+    reporting = traj.mode == Mode.REPORTING
+    reporters = np.flatnonzero(reporting.any(axis=0))
+    for k, drone in enumerate(reporters):  # on_detect = report: the legs to the BS
+        legs = np.where(reporting[:, drone], traj.positions[:, drone].T, np.nan)
+        ax.plot(legs[0], legs[1], lw=2.2, color="black", alpha=0.7,
+                label="flying to tell the BS" if k == 0 else None)
     ax.plot(bx, by, marker="^", ms=12, color="tab:blue", ls="none", label="base station")
     ax.plot(tx, ty, marker="X", ms=11, color="tab:red", ls="none", label="target")
     if result.t_detect is not None and result.detector is not None:
