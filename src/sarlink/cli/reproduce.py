@@ -30,16 +30,17 @@ def reproduce(
     out: Annotated[Path, typer.Option(
         "--out", "-o", help="output folder, created or resumed")] = Path("reproduction"),
     figures: Annotated[str | None, typer.Option(
-        help="paper figures to reproduce, e.g. 1,3,7; default all")] = None,
+        help="figures to reproduce, e.g. 1,3,7 (the paper's 1-7; 8: beyond the paper, drones "
+             "that fly to tell the BS); default all")] = None,
     workers: Annotated[int | None, typer.Option(
         help="local worker processes; default one per core", min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="address of a running Dask scheduler, tcp://host:port")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bars")] = False,
 ) -> None:
-    """Rerun the experiments behind the paper's Figs. 1-7, draw them and report which of the
-    paper's claims hold, are contradicted or stay undecided; an interrupted reproduction
-    resumes where it stopped."""
+    """Rerun the experiments behind the paper's Figs. 1-7 (and Fig. 8, beyond the paper), draw
+    them and report which of the paper's claims hold, are contradicted or stay undecided; an
+    interrupted reproduction resumes where it stopped."""
     import matplotlib
 
     matplotlib.use("Agg")  # files only, never a window
