@@ -27,11 +27,13 @@ from sarlink.sizing import DesignAnswer, DesignRequest, Verdict, design
 from sarlink.sizing.sequential import worse
 
 SMALL = Mission.build(size=2000.0, rc=500.0)
+PAPER = {"on_detect": ["continue"]}
+"""The paper's behaviour only: one variant per planner (the default also tries reporting)."""
 
 
 def small(**fields: Any) -> DesignRequest:
     return DesignRequest(**{"mission": SMALL, "max_drones": 5, "candidate_runs": 1600,
-                            **fields})
+                            "options": PAPER, **fields})
 
 
 def candidate_runs(out: Path, answer: DesignAnswer) -> pd.DataFrame:
@@ -65,7 +67,7 @@ def test_a_requirement_no_team_can_reach_is_not_reachable(tmp_path: Path) -> Non
 def test_with_single_hop_range_success_is_detection(tmp_path: Path) -> None:
     """r_c >= 2829 m reaches the BS from anywhere in the 4 km area: notified = detected."""
     request = DesignRequest(mission=Mission.build(rc=2829.0), td=800.0, ps=0.5,
-                            planners=("covb", "conb"), max_drones=6)
+                            planners=("covb", "conb"), max_drones=6, options=PAPER)
     answer = design(request, tmp_path, progress=False)
     runs = candidate_runs(tmp_path, answer)
     assert len(runs) > 0
@@ -82,7 +84,8 @@ def test_with_single_hop_range_success_is_detection(tmp_path: Path) -> None:
 
 def test_mtsp_with_two_drones_always_succeeds_by_the_flight_budget(tmp_path: Path) -> None:
     """The paper: at t_d = 4000 s mTSP finishes the search with 2 drones, so P_s = 1."""
-    request = DesignRequest(td=4000.0, ps=0.95, planners=("mtsp",), max_drones=3)
+    request = DesignRequest(td=4000.0, ps=0.95, planners=("mtsp",), max_drones=3,
+                            options=PAPER)
     answer = design(request, tmp_path, progress=False)
     (mtsp,) = answer.planners
     assert mtsp.status == "reached" and mtsp.smallest == 2
@@ -175,6 +178,12 @@ def test_each_candidate_folder_is_a_sweep_of_its_mission(
 # -- options and bad requests --------------------------------------------------------------------
 
 
+def test_the_default_tries_every_planner_with_and_without_reporting() -> None:
+    variants = DesignRequest(td=600.0, ps=0.5, planners=("covb", "mtsp")).variants()
+    assert sorted((v.planner, v.params()["on_detect"]) for v in variants) == [
+        ("covb", "continue"), ("covb", "report"), ("mtsp", "continue"), ("mtsp", "report")]
+
+
 def test_options_make_variants_of_every_planner() -> None:
     request = DesignRequest(td=600.0, ps=0.5, planners=("covb", "concov"),
                             options={"look": ["per-pass", "per-period"], "alpha": [0.3]})
@@ -228,7 +237,8 @@ def test_cli_prints_json_and_draws_the_figure(tmp_path: Path) -> None:
     result = CliRunner().invoke(app, [
         "design", "--size", "2000", "--rc", "500", "--td", "600", "--ps", "0.6",
         "--planner", "covb", "--planner", "concov", "--alpha-step", "0.5", "--alpha-tol", "0.5",
-        "--max-drones", "3", "--out", str(tmp_path / "runs"), "--json", "--plot", str(figure)])
+        "--max-drones", "3", "--option", "on_detect=continue", "--out", str(tmp_path / "runs"),
+        "--json", "--plot", str(figure)])
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
     assert data["recommendation"]["smallest"] in (2, 3)
@@ -247,7 +257,8 @@ def test_a_killed_design_resumes_to_the_same_answer(
             "--size", "2000", "--rc", "500", "--td", "600", "--ps", str(REQUIRED),
             "--planner", "covb", "--planner", "concov",
             "--alpha-step", "0.5", "--alpha-tol", "0.5", "--max-drones", "5",
-            "--candidate-runs", "1600", "--workers", "1", "--out", str(tmp_path), "--quiet"]
+            "--candidate-runs", "1600", "--option", "on_detect=continue", "--workers", "1",
+            "--out", str(tmp_path), "--quiet"]
     process = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 120
     while len(list(tmp_path.glob("seed-2024/*/points/*/runs-*.parquet"))) < 5:

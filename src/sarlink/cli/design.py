@@ -133,7 +133,7 @@ def design(
         help="planner to consider; repeat for several; default: all")] = None,
     option: Annotated[list[str] | None, typer.Option(
         help="NAME=V1,V2: also try every planner with each value of a mission parameter; "
-             "repeat for several")] = None,
+             "repeat for several; default: on_detect=continue,report")] = None,
     max_drones: Annotated[int, typer.Option(help="largest team considered")] = 22,
     rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
     size: Annotated[float | None, typer.Option(help="side of the square area, m")] = None,
@@ -173,13 +173,15 @@ def design(
         mission = build_mission(config, rc=rc, size=size, r=r, p_miss=p_miss, look=look,
                                 sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent)
         fields: dict[str, Any] = {
-            "mission": mission, "td": td, "ps": ps, "options": _options(option or []),
+            "mission": mission, "td": td, "ps": ps,
             "max_drones": max_drones, "confidence": confidence, "max_runs": max_runs,
             "candidate_runs": candidate_runs, "first_runs": first_runs, "margin": margin,
             "alpha_step": alpha_step, "alpha_tol": alpha_tol, "seed": seed,
         }
         if planner is not None:
             fields["planners"] = tuple(planner)
+        if option is not None:  # else the request's default: with and without reporting
+            fields["options"] = _options(option)
         try:
             request = DesignRequest.from_dict(fields)
         except ConfigError as exc:

@@ -36,9 +36,10 @@ class DesignRequest(Checked):
     planners: tuple[str, ...] = Field(default_factory=lambda: tuple(planner_names()),
                                       description="planners to consider")
     options: dict[str, list[Any]] = Field(
-        default_factory=dict,
+        default_factory=lambda: {"on_detect": ["continue", "report"]},
         description="extra flat mission parameters -> values; every planner is also tried "
-        "with each combination (e.g. on_detect = [continue, report])")
+        "with each combination; default: with and without drones that report "
+        "(on_detect = continue, report)")
     max_drones: int = Field(22, ge=1, le=1000, description="largest team considered")
     confidence: float = Field(0.95, gt=0.5, lt=1,
                               description="two-sided confidence of the interval on P_s")
