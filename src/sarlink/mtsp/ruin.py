@@ -15,6 +15,9 @@ the machine's speed.
 
 from __future__ import annotations
 
+import time
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
@@ -22,14 +25,17 @@ from sarlink.mtsp.plan import distance_matrix
 
 __all__ = ["RESTARTS", "RUIN_ITERATIONS", "solve_minmax"]
 
-RESTARTS = 4
+RESTARTS = 3
 """Independent searches per plan; the shortest longest tour wins."""
 
 RUIN_ITERATIONS = 50_000
 """Ruin-and-recreate steps per search."""
 
-_MAX_RUIN = 20
-"""Most cells taken out in one step (fewer when there are fewer points)."""
+_MAX_RUIN = 64
+"""Most points taken out in one step (all of them when there are fewer)."""
+
+_CHUNK = 1000
+"""Iterations per call of the compiled kernel; the time limit is checked between calls."""
 
 _TEMPERATURE = 0.006
 """Initial annealing temperature as a fraction of the floor (the round trip to the farthest
@@ -42,7 +48,7 @@ plans whose other tours leave room to take cells from the longest."""
 
 def solve_minmax(
     points: np.ndarray, depot: tuple[float, float], salesmen: int, min_cells: int, seed: int,
-    *, restarts: int = RESTARTS, iterations: int = RUIN_ITERATIONS,
+    time_limit: float, *, restarts: int = RESTARTS, iterations: int = RUIN_ITERATIONS,
 ) -> tuple[tuple[int, ...], ...]:
     """Tours (point indices per salesman) minimising the longest, each of ``min_cells`` or more.
 
@@ -50,6 +56,7 @@ def solve_minmax(
     satisfies ``min_cells``; the searches stop early once a plan reaches the floor, the round
     trip to the farthest point, which no plan can beat.
     """
+    deadline = time.perf_counter() + time_limit
     dist = distance_matrix(points, depot)
     k = len(points)
     angles = np.arctan2(points[:, 1] - depot[1], points[:, 0] - depot[0])
@@ -58,19 +65,49 @@ def solve_minmax(
         start[cells] = part
     near = np.argsort(dist[1:, 1:], axis=1, kind="stable").astype(np.int64) + 1
     floor = 2 * float(dist[0].max())
-    best: np.ndarray | None = None
+    best: list[np.ndarray] = []
     best_length = np.inf
     for rng in (np.random.default_rng(s) for s in np.random.SeedSequence(seed).spawn(restarts)):
-        routes, sizes = _search(dist, near, salesmen, min_cells, start, iterations,
-                                min(_MAX_RUIN, k), _TEMPERATURE * floor, floor, rng)
-        length = max(_tour_length(dist, routes[v], sizes[v]) for v in range(salesmen))
-        if length < best_length:
-            best_length = length
-            best = np.array([routes[v, : sizes[v]] for v in range(salesmen)], dtype=object)
-        if best_length <= floor * (1 + 1e-12):
+        state = _State.start(dist, start, salesmen)
+        for first in range(0, iterations, _CHUNK):
+            if state.best <= floor * (1 + 1e-12) or time.perf_counter() > deadline:
+                break
+            state.best = _search(dist, near, min_cells, state.routes, state.sizes,
+                                 state.best_routes, state.best_sizes, first,
+                                 min(first + _CHUNK, iterations), iterations,
+                                 min(_MAX_RUIN, k), _TEMPERATURE * floor, floor, rng)
+        if state.best < best_length:
+            best_length = state.best
+            best = [state.best_routes[v, : state.best_sizes[v]] for v in range(salesmen)]
+        if best_length <= floor * (1 + 1e-12) or time.perf_counter() > deadline:
             break
-    assert best is not None
     return tuple(tuple(int(c) - 1 for c in tour) for tour in best)
+
+
+@dataclass
+class _State:
+    """One search's current and best routes (node ids, depot 0; row ``v`` is salesman ``v``,
+    its first ``sizes[v]`` entries his tour), kept between chunks of iterations."""
+
+    routes: np.ndarray
+    sizes: np.ndarray
+    best_routes: np.ndarray
+    best_sizes: np.ndarray
+    best: float
+
+    @staticmethod
+    def start(dist: np.ndarray, start: np.ndarray, salesmen: int) -> _State:
+        """The start plan: point ``c`` in tour ``start[c]``, each tour improved by 2-opt."""
+        routes = np.zeros((salesmen, len(start)), dtype=np.int64)
+        sizes = np.zeros(salesmen, dtype=np.int64)
+        for c, v in enumerate(start):
+            routes[v, sizes[v]] = c + 1
+            sizes[v] += 1
+        longest = 0.0
+        for v in range(salesmen):
+            _two_opt(dist, routes[v], sizes[v])
+            longest = max(longest, _tour_length(dist, routes[v], sizes[v]))
+        return _State(routes, sizes, routes.copy(), sizes.copy(), longest)
 
 
 @njit(cache=True)
@@ -110,31 +147,29 @@ def _score(lengths: np.ndarray) -> float:
 
 
 @njit(cache=True)
-def _search(dist: np.ndarray, near: np.ndarray, salesmen: int, min_cells: int,
-            start: np.ndarray, iterations: int, max_ruin: int, temperature: float,
-            floor: float, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """One annealed ruin-and-recreate search; returns the best routes (node ids, depot 0) and
-    their sizes."""
+def _search(dist: np.ndarray, near: np.ndarray, min_cells: int, routes: np.ndarray,
+            sizes: np.ndarray, best_routes: np.ndarray, best_sizes: np.ndarray, first: int,
+            last: int, iterations: int, max_ruin: int, temperature: float, floor: float,
+            rng: np.random.Generator) -> float:
+    """Iterations ``first`` to ``last`` of an annealed ruin-and-recreate search of
+    ``iterations``; updates the current and best routes in place, returns the best longest."""
+    salesmen = routes.shape[0]
     k = dist.shape[0] - 1
-    routes = np.zeros((salesmen, k), dtype=np.int64)
-    sizes = np.zeros(salesmen, dtype=np.int64)
-    for c in range(k):
-        v = start[c]
-        routes[v, sizes[v]] = c + 1
-        sizes[v] += 1
     lengths = np.zeros(salesmen)
+    best_lengths = np.zeros(salesmen)
     for v in range(salesmen):
-        _two_opt(dist, routes[v], sizes[v])
         lengths[v] = _tour_length(dist, routes[v], sizes[v])
+        best_lengths[v] = _tour_length(dist, best_routes[v], best_sizes[v])
     score = _score(lengths)
-    best_routes, best_sizes, best = routes.copy(), sizes.copy(), lengths.max()
+    best = best_lengths.max()
+    cur_routes, cur_sizes = routes.copy(), sizes.copy()
     removed = np.empty(max_ruin, dtype=np.int64)
     keys = np.empty(max_ruin)
     changed = np.zeros(salesmen, dtype=np.bool_)
-    for it in range(iterations):
+    for it in range(first, last):
         if best <= floor * (1 + 1e-12):
             break
-        new_routes, new_sizes, new_lengths = routes.copy(), sizes.copy(), lengths.copy()
+        new_routes, new_sizes, new_lengths = cur_routes.copy(), cur_sizes.copy(), lengths.copy()
         changed[:] = False
         # ruin: a random point and its nearest neighbours leave their tours
         seed_cell = rng.integers(0, k)
@@ -189,7 +224,11 @@ def _search(dist: np.ndarray, near: np.ndarray, salesmen: int, min_cells: int,
         new_score = _score(new_lengths)
         heat = temperature * (1.0 - it / iterations) + 1e-12
         if new_score < score or rng.random() < np.exp((score - new_score) / heat):
-            routes, sizes, lengths, score = new_routes, new_sizes, new_lengths, new_score
+            cur_routes, cur_sizes, lengths, score = new_routes, new_sizes, new_lengths, new_score
             if lengths.max() < best - 1e-9:
-                best_routes, best_sizes, best = routes.copy(), sizes.copy(), lengths.max()
-    return best_routes, best_sizes
+                best = lengths.max()
+                best_routes[:] = cur_routes
+                best_sizes[:] = cur_sizes
+    routes[:] = cur_routes
+    sizes[:] = cur_sizes
+    return best
