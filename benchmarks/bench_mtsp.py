@@ -41,6 +41,11 @@ N >= 14 reach the floor. Upper bounds on the optimum, rounded down to 0.1 m; a s
 this script's own is taken instead."""
 
 
+LONG_RUNS = "## Best known: the long runs"
+"""Heading of the part of the --out file that records how BEST_KNOWN was found; rewriting the
+file keeps it."""
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="timed GA solves for the speed")
@@ -127,7 +132,9 @@ def main() -> None:
     ])
     if args.out is not None:
         args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text(text)
+        old = args.out.read_text() if args.out.exists() else ""
+        kept = old.find(LONG_RUNS)  # the record of the long runs is not made by this script
+        args.out.write_text(text + ("\n" + old[kept:] if kept >= 0 else ""))
         print(f"written to {args.out}")
 
 
