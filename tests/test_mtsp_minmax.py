@@ -50,7 +50,7 @@ def test_min_cells_that_binds_moves_cells_to_the_far_tours() -> None:
     alone; with 5 points each, the far tour must also fetch points from the near cluster."""
     rng = np.random.default_rng(1)
     near = rng.normal(0.0, 10.0, (8, 2))
-    far = rng.normal(0.0, 10.0, (2, 2)) + (1000.0, 0.0)
+    far = rng.normal(0.0, 10.0, (2, 2)) + np.array([1000.0, 0.0])
     points = np.vstack([near, far])
     free = solve(points, (0.0, 0.0), 2, solver="ortools", objective="minmax", min_cells=1)
     bound = solve(points, (0.0, 0.0), 2, solver="ortools", objective="minmax", min_cells=5)
