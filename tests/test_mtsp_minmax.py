@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import sarlink.mtsp.ruin as ruin
 from sarlink.mtsp import grid_cells, solve
 from sarlink.mtsp.plan import MtspPlan, distance_matrix
 from sarlink.mtsp.ruin import solve_minmax
@@ -28,6 +29,19 @@ def test_a_plan_depends_on_the_seed_only() -> None:
     a, b = (solve_minmax(GRID, BS, 7, 9, 3, 60.0, restarts=2, iterations=2000)
             for _ in range(2))
     assert a == b
+
+
+def test_cutting_the_search_into_other_chunks_gives_the_same_plan(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The time limit is checked between chunks of steps; where they are cut must not matter."""
+    whole = solve_minmax(GRID, BS, 6, 10, 2, 60.0, restarts=1, iterations=1500)
+    monkeypatch.setattr(ruin, "_CHUNK", 7)
+    assert solve_minmax(GRID, BS, 6, 10, 2, 60.0, restarts=1, iterations=1500) == whole
+
+
+def test_large_instances_check_the_time_limit_after_fewer_steps() -> None:
+    assert ruin._chunk(64, 10) == ruin._CHUNK  # the paper's grid: whole chunks
+    assert ruin._chunk(10_000, 1) == 1  # one 10,000-point tour: after every step
 
 
 def test_more_search_never_gives_a_longer_plan_for_the_same_seed() -> None:

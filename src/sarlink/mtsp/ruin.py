@@ -38,7 +38,11 @@ _MAX_RUIN = 64
 """Most points taken out in one step (all of them when there are fewer)."""
 
 _CHUNK = 1000
-"""Iterations per call of the compiled kernel; the time limit is checked between calls."""
+"""Most iterations per call of the compiled kernel; the time limit is checked between calls."""
+
+_CHUNK_WORK = 2_000_000
+"""Rough work per call: a step costs about K x K / salesmen (re-inserting points, 2-opt on a
+changed tour), so large instances get smaller chunks and still stop near the time limit."""
 
 _TEMPERATURE = 0.006
 """Initial annealing temperature as a fraction of the floor (the round trip to the farthest
@@ -68,16 +72,17 @@ def solve_minmax(
         start[cells] = part
     near = np.argsort(dist[1:, 1:], axis=1, kind="stable").astype(np.int64) + 1
     floor = 2 * float(dist[0].max())
+    chunk = _chunk(k, salesmen)
     best: list[np.ndarray] = []
     best_length = np.inf
     for rng in (np.random.default_rng(s) for s in np.random.SeedSequence(seed).spawn(restarts)):
         state = _State.start(dist, start, salesmen)
-        for first in range(0, iterations, _CHUNK):
+        for first in range(0, iterations, chunk):
             if state.best <= floor * (1 + 1e-12) or time.perf_counter() > deadline:
                 break
             state.best = _search(dist, near, min_cells, state.routes, state.sizes,
                                  state.best_routes, state.best_sizes, first,
-                                 min(first + _CHUNK, iterations), iterations,
+                                 min(first + chunk, iterations), iterations,
                                  min(_MAX_RUIN, k), _TEMPERATURE * floor, floor, rng)
         if state.best < best_length:
             best_length = state.best
@@ -85,6 +90,11 @@ def solve_minmax(
         if best_length <= floor * (1 + 1e-12) or time.perf_counter() > deadline:
             break
     return tuple(tuple(int(c) - 1 for c in tour) for tour in best)
+
+
+def _chunk(points: int, salesmen: int) -> int:
+    """Iterations per kernel call: :data:`_CHUNK` on the paper's grid, fewer on large instances."""
+    return max(1, min(_CHUNK, _CHUNK_WORK // (points * max(1, points // salesmen))))
 
 
 @dataclass
