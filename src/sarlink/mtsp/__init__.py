@@ -7,8 +7,9 @@ cells and back (:mod:`.plan`). :func:`solve` checks the arguments and hands them
 ``ga`` (:mod:`.ga`)
     The paper's genetic algorithm, after Joseph Kirk's MATLAB ``mtspf_ga``, compiled with Numba:
     faithful, seeded, a tenth of a second for 80 × 5000 on 64 cells.
-``ortools`` (:mod:`.ortools`)
-    OR-Tools routing with guided local search: a strong solver to measure the GA against.
+``ortools`` (:mod:`.ortools`, :mod:`.ruin`)
+    The strong solver to measure the GA against: OR-Tools routing with guided local search for
+    ``minsum``, a seeded ruin-and-recreate search for ``minmax`` (where OR-Tools stalls).
 
 :func:`plan_for` makes each mission's plan once and caches it on disk (:mod:`.cache`).
 """

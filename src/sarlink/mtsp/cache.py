@@ -35,7 +35,7 @@ __all__ = ["CACHE_VERSION", "cache_dir", "clear_cache", "plan_for", "solve_for"]
 MAX_CELLS = 10_000
 """Most cells of a plan: the solvers hold a dense distance matrix (800 MB at this size)."""
 
-CACHE_VERSION = 2
+CACHE_VERSION = 3
 """Bumped whenever a solver or the file format changes, so that old plans are not reused."""
 
 

@@ -11,6 +11,7 @@ import numpy as np
 from sarlink.mtsp.ga import solve_ga
 from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT, solve_ortools
 from sarlink.mtsp.plan import MtspPlan, Objective, Solver
+from sarlink.mtsp.ruin import solve_minmax
 
 __all__ = ["solve"]
 
@@ -39,7 +40,9 @@ def solve(
     salesmen
         Number of tours, ``1 <= salesmen <= K``; every salesman visits at least one point.
     solver
-        ``"ga"``: Kirk's genetic algorithm (the paper's); ``"ortools"``: OR-Tools routing.
+        ``"ga"``: Kirk's genetic algorithm (the paper's); ``"ortools"``: the strong solver,
+        OR-Tools routing under ``minsum`` and a ruin-and-recreate search under ``minmax``
+        (:mod:`sarlink.mtsp.ruin`, where OR-Tools stalls).
     objective
         ``"minsum"``: total distance (the paper's); ``"minmax"``: the longest tour, which is
         what bounds the search time of a team.
@@ -48,10 +51,13 @@ def solve(
         tours enough that two drones finish the paper's search within their flight budget.
     population, iterations, seed
         GA settings. The population is rounded down to a multiple of 8 (groups of 8). The seed
-        is the only source of randomness; OR-Tools routing has no random seed and ignores it.
+        is the only source of randomness of the GA and of the min-max search; OR-Tools routing
+        (``ortools``, ``minsum``) has no random seed and ignores it.
     time_limit
-        OR-Tools search time, s. A time-limited search may end at a different plan on a
-        faster or slower machine; the GA does not depend on time.
+        Strong solver's time, s: OR-Tools' search time under ``minsum``, a cap on the min-max
+        search, which ends at its iteration budget first on the paper's grid. A search cut by
+        time may end at a different plan on a faster or slower machine; the GA does not depend
+        on time.
     """
     pts = np.asarray(points, dtype=float)
     if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) == 0:
@@ -81,9 +87,10 @@ def solve(
     if solver == "ga":
         tours, history = solve_ga(pts, dep, salesmen, objective, min_cells,
                                   population // 8 * 8, iterations, seed)
+    elif objective == "minmax":
+        tours, history = solve_minmax(pts, dep, salesmen, min_cells, seed, time_limit), np.empty(0)
     else:
-        tours = solve_ortools(pts, dep, salesmen, objective, min_cells, time_limit)
-        history = np.empty(0)
+        tours, history = solve_ortools(pts, dep, salesmen, min_cells, time_limit), np.empty(0)
     return MtspPlan(points=pts, depot=dep, tours=tours, min_cells=min_cells, solver=solver,
                     objective=objective, history=history, seconds=time.perf_counter() - start)
 
