@@ -33,7 +33,8 @@ def plan(
         help="minsum (total distance, the paper's) or minmax (longest tour)")] = None,
     min_cells: Annotated[int | None, typer.Option(
         help="minimum cells per drone (default floor(cells / drones))")] = None,
-    seed: Annotated[int | None, typer.Option(help="seed of the GA", min=0)] = None,
+    seed: Annotated[int | None, typer.Option(
+        help="seed of the plan search (the GA, or the min-max search)", min=0)] = None,
     size: Annotated[float | None, typer.Option(help="side a of the area, m")] = None,
     r: Annotated[float | None, typer.Option(help="sensing range r = cell side, m")] = None,
     speed: Annotated[float | None, typer.Option(help="flight speed V_m, m/s")] = None,

@@ -131,7 +131,8 @@ class MtspSettings(Checked):
     """
 
     solver: Literal["ga", "ortools"] = Field(
-        "ga", description="ga: the paper's genetic algorithm; ortools: OR-Tools routing"
+        "ga", description="ga: the paper's genetic algorithm; ortools: the strong solver, "
+        "OR-Tools routing for minsum and a ruin-and-recreate search for minmax (docs/mtsp.md)"
     )
     objective: Literal["minsum", "minmax"] = Field(
         "minsum", description="minsum: total distance (paper); minmax: longest tour"
