@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from sarlink.cli.common import console, output_folder, user_errors
-from sarlink.config import ConfigError
+from sarlink.config import DEFAULT_READING, READINGS, ConfigError
 from sarlink.config.experiment import MAX_WORKERS
 
 
@@ -37,6 +37,13 @@ def reproduce(
     scheduler: Annotated[str | None, typer.Option(
         help="address of a running Dask scheduler, tcp://host:port")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bars")] = False,
+    reading: Annotated[str, typer.Option(
+        help=f"the reading of what the paper leaves open: {', '.join(READINGS)} "
+             "(docs/model.md, Readings)")] = DEFAULT_READING,
+    sensitivity: Annotated[bool, typer.Option(
+        "--sensitivity", help="also decide every claim under each single change of the "
+        "reading (reruns only what a change reaches) and report what each claim depends "
+        "on")] = False,
 ) -> None:
     """Rerun the experiments behind the paper's Figs. 1-7 (and Fig. 8, beyond the paper), draw
     them and report which of the paper's claims hold, are contradicted or stay undecided; an
@@ -51,9 +58,13 @@ def reproduce(
     with user_errors():
         folder = output_folder(out, "--out")  # plan_times.json goes straight into it
         result = run_reproduction(folder, runs=runs, quick=quick, figures=_numbers(figures),
-                                  workers=workers, scheduler=scheduler, progress=not quiet)
+                                  workers=workers, scheduler=scheduler, progress=not quiet,
+                                  reading=reading, sensitivity_analysis=sensitivity)
     findings = (f"{len(result.findings)} of the paper's claims checked: "
                 f"{tally(result.findings)}" if result.findings else "no claims checked")
+    changes = (f"; {len(result.variants)} single changes of the reading decided too"
+               if result.variants else "")
     console.print(f"report: {result.report_html} and {result.report_md} "
-                  f"({result.runs} runs per point, {result.seconds:.0f} s); {findings}",
+                  f"({result.runs} runs per point, reading {result.reading!r}, "
+                  f"{result.seconds:.0f} s); {findings}{changes}",
                   highlight=False, soft_wrap=True)

@@ -7,13 +7,17 @@ from sarlink.config.mission import (
     Channel,
     Mission,
     MtspSettings,
+    Readings,
     Sensing,
     Team,
     Timing,
     param_groups,
 )
+from sarlink.config.readings import DEFAULT_READING, READINGS, Reading, get_reading
 
 __all__ = [
+    "DEFAULT_READING",
+    "READINGS",
     "Area",
     "Channel",
     "Checked",
@@ -21,9 +25,12 @@ __all__ = [
     "Experiment",
     "Mission",
     "MtspSettings",
+    "Reading",
+    "Readings",
     "Sensing",
     "Team",
     "Timing",
+    "get_reading",
     "mission_hash",
     "param_groups",
 ]

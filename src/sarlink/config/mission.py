@@ -19,6 +19,7 @@ __all__ = [
     "Channel",
     "Mission",
     "MtspSettings",
+    "Readings",
     "Sensing",
     "Team",
     "Timing",
@@ -123,6 +124,41 @@ class Timing(Checked):
     )
 
 
+class Readings(Checked):
+    """How the distributed rules read what the paper leaves open (docs/model.md, Readings).
+
+    Each field is one choice; :data:`sarlink.config.readings.READINGS` names sets of them
+    (``literal``, ``sarlink-1``, ...), and ``Mission.build(reading=...)`` applies one.
+    """
+
+    conb_check: Literal["period", "continuous"] = Field(
+        "period",
+        description="ConB's connectivity check (Section 3.2): period: at the end of each "
+        "sensing period, for the graph at t + t_s; continuous: every step, for the graph at "
+        "every increment up to t + t_s, turning at once if a loss of the route is predicted",
+    )
+    contacts: Literal["routed", "all"] = Field(
+        "routed",
+        description="Eq. 11's neighbour j: routed: the longest contact among the neighbours "
+        "predicted to keep a route to the BS (all if none is); all: among every neighbour",
+    )
+    isolated: Literal["keep", "home"] = Field(
+        "keep",
+        description="ConB's term for a drone with no communication neighbour: keep its "
+        "heading, or turn towards the BS",
+    )
+    concov_fallback: Literal["heading", "connectivity"] = Field(
+        "heading",
+        description="ConCov's heading when Eq. 12's two unit terms cancel: keep the heading, "
+        "or follow the connectivity term",
+    )
+    concov_connected: Literal["heading", "none"] = Field(
+        "heading",
+        description="ConCov's connectivity term for a drone predicted to keep its route: its "
+        "heading (Algorithm 2), or none (coverage alone steers it)",
+    )
+
+
 class MtspSettings(Checked):
     """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings.
 
@@ -158,7 +194,7 @@ MAX_STEPS = 10_000_000
 MAX_RECORDS = 1_000_000
 """Most cumulative records (checkpoints) in one run (the paper's runs have 81)."""
 
-_GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "mtsp")
+_GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "readings", "mtsp")
 
 
 class Mission(Checked):
@@ -172,6 +208,7 @@ class Mission(Checked):
     sensing: Sensing = Field(default_factory=Sensing)
     channel: Channel = Field(default_factory=Channel)
     timing: Timing = Field(default_factory=Timing)
+    readings: Readings = Field(default_factory=Readings)
     mtsp: MtspSettings = Field(default_factory=MtspSettings)
 
     @model_validator(mode="after")
@@ -201,9 +238,16 @@ class Mission(Checked):
     # -- construction -------------------------------------------------------------------------
 
     @classmethod
-    def build(cls, **params: Any) -> Mission:
-        """A mission from flat parameters, e.g. ``Mission.build(drones=22, rc=500)``."""
-        return cls().replace(**params)
+    def build(cls, reading: str | None = None, **params: Any) -> Mission:
+        """A mission from flat parameters, e.g. ``Mission.build(drones=22, rc=500)``.
+
+        ``reading`` names a set of the paper's readings (:data:`sarlink.config.READINGS`)
+        applied first; explicit parameters override it.
+        """
+        from sarlink.config.readings import get_reading
+
+        base = {} if reading is None else get_reading(reading).choices
+        return cls().replace(**{**base, **params})
 
     # -- flat view ----------------------------------------------------------------------------
 
@@ -254,6 +298,6 @@ def param_groups() -> dict[str, str]:
     """Flat parameter name -> the group that holds it."""
     models: dict[str, type[BaseModel]] = {
         "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "mtsp": MtspSettings,
+        "readings": Readings, "mtsp": MtspSettings,
     }
     return {field: group for group, model in models.items() for field in model.model_fields}

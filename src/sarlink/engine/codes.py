@@ -60,3 +60,53 @@ class Reporters(IntEnum):
 
 
 REPORTERS_CODES = {"knowers": Reporters.KNOWERS, "detector": Reporters.DETECTOR}
+
+
+class Check(IntEnum):
+    """When a ConB drone checks its connectivity to the BS (Section 3.2; docs/model.md)."""
+
+    PERIOD = 0  # at the end of each sensing period, for the graph at t + t_s
+    CONTINUOUS = 1  # every step, for the graph at every increment up to t + t_s
+
+
+CHECK_CODES = {"period": Check.PERIOD, "continuous": Check.CONTINUOUS}
+
+
+class Contacts(IntEnum):
+    """Which neighbours Eq. 11's longest-contact neighbour j is chosen from."""
+
+    ROUTED = 0  # those predicted to keep a route to the BS (all if none is)
+    ALL = 1  # every communication neighbour
+
+
+CONTACTS_CODES = {"routed": Contacts.ROUTED, "all": Contacts.ALL}
+
+
+class Isolated(IntEnum):
+    """What ConB's term is for a drone without any communication neighbour."""
+
+    KEEP = 0  # its own heading (Eq. 9 without F_ij)
+    HOME = 1  # the direction to the BS
+
+
+ISOLATED_CODES = {"keep": Isolated.KEEP, "home": Isolated.HOME}
+
+
+class Fallback(IntEnum):
+    """ConCov's heading when Eq. 12's resultant vanishes (the two unit terms cancel)."""
+
+    HEADING = 0  # keep the heading
+    CONNECTIVITY = 1  # the connectivity term's direction
+
+
+FALLBACK_CODES = {"heading": Fallback.HEADING, "connectivity": Fallback.CONNECTIVITY}
+
+
+class Connected(IntEnum):
+    """ConCov's connectivity term for a drone predicted to keep its route to the BS."""
+
+    HEADING = 0  # its own heading (Algorithm 2)
+    NONE = 1  # no term: the coverage term alone steers it
+
+
+CONNECTED_CODES = {"heading": Connected.HEADING, "none": Connected.NONE}

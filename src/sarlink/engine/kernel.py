@@ -23,6 +23,7 @@ from numba import njit
 from sarlink.engine import graph, motion, radio, records, rules, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.params import (
+    CONTINUOUS,
     LANDED,
     REPORT,
     SEARCHING,
@@ -32,7 +33,7 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "28a7fe386bc0a869"
+SOURCE_DIGEST = "5b91c5fc3d7db85c"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
@@ -76,6 +77,7 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
     routed = np.zeros(nw, dtype=np.uint64)  # nodes with a route to the BS
     spread = np.zeros(nw, dtype=np.uint64)  # nodes that know the target's location
     routed_next = np.zeros(nw, dtype=np.uint64)  # ConB's prediction of routed at t + t_s
+    routed_step = np.zeros(nw, dtype=np.uint64)  # the same at one increment (continuous check)
     stack = np.empty(m, dtype=np.int64)
     qx, qy = np.full(mp, FAR), np.full(mp, FAR)  # ConB's predicted positions
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
@@ -91,6 +93,7 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
     t_det = t_not = NEVER
     detector = -1
     covb, conb = rules.uses_covb(p), rules.uses_conb(p)
+    continuous = conb and p.conb_check == CONTINUOUS
     routes = wp.shape[0] > 0
     may_settle = not (p.record or p.sigma > 0.0)  # a recorded run keeps every step
     home_max = motion.farthest_home(p)
@@ -103,7 +106,7 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
         first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
         if t_det < 0.0 and first >= 0:
             t_det, detector = t, first
-        push = False
+        push = continuous  # a drone may decide at any step: CovB's neighbours every step
         if covb:
             flying[:] = 0
             for i in range(n):
@@ -141,8 +144,14 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
                           leave_y, rejoin, last_change)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
+        if continuous:
+            any_deciding = rules.check_continuously(k, px, py, hx, hy, mode, on_route, pz, p, qx,
+                                                    qy, disc2, routed_next, routed_step, stack,
+                                                    deciding, last_change)
+        elif conb and any_deciding:
+            rules.predict_routes(px, py, hx, hy, mode, pz, p, p.ts_steps, qx, qy, disc2,
+                                 routed_next, stack)
         if conb and any_deciding:
-            rules.predict_routes(px, py, hx, hy, mode, pz, p, qx, qy, disc2, routed_next, stack)
             rules.conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, con_x,
                                 con_y)
         rules.steer(k, p, deciding, px, py, hx, hy, mode, on_route, last_change, near, flying,

@@ -4,7 +4,19 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from sarlink.engine.codes import Look, Mode, OnDetect, Reporters, Rule, Stop
+from sarlink.engine.codes import (
+    Check,
+    Connected,
+    Contacts,
+    Fallback,
+    Isolated,
+    Look,
+    Mode,
+    OnDetect,
+    Reporters,
+    Rule,
+    Stop,
+)
 
 SEARCHING = int(Mode.SEARCHING)
 RETURNING = int(Mode.RETURNING)
@@ -18,6 +30,11 @@ CONCOV = int(Rule.CONCOV)
 PER_PERIOD = int(Look.PER_PERIOD)
 STOP_DETECTED = int(Stop.DETECTED)
 STOP_NOTIFIED = int(Stop.NOTIFIED)
+CONTINUOUS = int(Check.CONTINUOUS)
+ALL_CONTACTS = int(Contacts.ALL)
+ISOLATED_HOME = int(Isolated.HOME)
+FALLBACK_CONNECTIVITY = int(Fallback.CONNECTIVITY)
+CONNECTED_NONE = int(Connected.NONE)
 
 
 class Params(NamedTuple):
@@ -45,4 +62,8 @@ class Params(NamedTuple):
     record: bool
     on_detect: int
     reporters: int
-
+    conb_check: int
+    contacts: int
+    isolated: int
+    concov_fallback: int
+    concov_connected: int

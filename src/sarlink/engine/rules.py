@@ -18,7 +18,18 @@ from numba import njit
 from sarlink.engine.geometry import TINY, unit
 from sarlink.engine.graph import add, bit, drop, lowest, push_new
 from sarlink.engine.motion import boundary_turn
-from sarlink.engine.params import CONB, CONCOV, COVB, LANDED, SEARCHING, Params
+from sarlink.engine.params import (
+    ALL_CONTACTS,
+    CONB,
+    CONCOV,
+    CONNECTED_NONE,
+    COVB,
+    FALLBACK_CONNECTIVITY,
+    ISOLATED_HOME,
+    LANDED,
+    SEARCHING,
+    Params,
+)
 
 _ONE = np.uint64(1)
 _ZERO = np.uint64(0)
@@ -65,10 +76,11 @@ def covb_force(i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.nd
 @njit(cache=True, inline="always", error_model="numpy")
 def predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
-    pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
+    pz: np.ndarray, p: Params, steps: int, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
     out: np.ndarray, stack: np.ndarray,
 ) -> None:
-    """Who reaches the BS at ``t + t_s`` if every node keeps its heading (shadow-free range).
+    """Who reaches the BS ``steps`` increments ahead if every node keeps its heading
+    (shadow-free range).
 
     A breadth-first search from the BS that computes a node's links only when it reaches
     the node: the links of nodes cut off from the BS are never needed.
@@ -76,7 +88,7 @@ def predict_routes(
     n = hx.shape[0]
     m = n + 2
     mp = qx.shape[0]
-    ahead = p.speed * p.ts_steps * p.dt
+    ahead = p.speed * steps * p.dt
     for j in range(m):
         qx[j], qy[j] = px[j], py[j]
         if j < n and mode[j] != LANDED:
@@ -106,6 +118,37 @@ def predict_routes(
     drop(out, n + 1)
 
 
+@njit(cache=True, error_model="numpy")
+def check_continuously(
+    k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
+    on_route: np.ndarray, pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray,
+    disc2: np.ndarray, routed_next: np.ndarray, routed_step: np.ndarray, stack: np.ndarray,
+    deciding: np.ndarray, last_change: np.ndarray,
+) -> bool:
+    """ConB's connectivity check read as Section 3.2 words it (``conb_check = continuous``).
+
+    "Within every sensing period the connectivity of a given UAV i to the BS ... is checked at
+    incremental time intervals ... If at any time within the sensing period the UAV i would
+    lose its connectivity to the BS, direction change would be initiated": every step, the
+    graph is predicted at each increment up to ``t + t_s``; ``routed_next`` holds the nodes
+    routed at all of them, and a searching distributed drone outside it decides now (its
+    clock restarts). Returns whether any drone decides this step.
+    """
+    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, stack)
+    for s in range(2, p.ts_steps + 1):
+        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, stack)
+        for w in range(routed_next.shape[0]):
+            routed_next[w] &= routed_step[w]
+    any_deciding = False
+    for i in range(hx.shape[0]):
+        if not deciding[i] and not on_route[i] and mode[i] == SEARCHING and not bit(
+                routed_next[i >> 6], i):
+            deciding[i] = True
+            last_change[i] = k
+        any_deciding |= deciding[i]
+    return any_deciding
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def conb_headings(
     deciding: np.ndarray, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
@@ -114,19 +157,24 @@ def conb_headings(
 ) -> None:
     """Unit direction of Eq. 9 (Algorithm 1, part 2) of every deciding drone, into ``vx, vy``.
 
-    A drone keeps its heading if it is predicted to reach the BS at ``t + t_s``
-    (``routed_next``); else it steers towards where the neighbour with the longest contact
-    (among those predicted to keep a route to the BS, if any) would be when the contact ends.
+    A drone keeps its heading if it is predicted to keep its route to the BS (``routed_next``;
+    ConCov's term is then zero with ``concov_connected = none``); else it steers towards where
+    the neighbour with the longest contact (among those predicted to keep a route to the BS,
+    if any, with ``contacts = routed``) would be when the contact ends; a drone without
+    neighbours keeps its heading or, with ``isolated = home``, turns to the BS.
     A neighbour's route "without i" is its route in the predicted graph: ``i`` is not in the
     BS's predicted component here, so removing it changes nothing.
     """
     n = hx.shape[0]
     rc2 = p.rc * p.rc
+    no_term = p.rule == CONCOV and p.concov_connected == CONNECTED_NONE and p.alpha > 0.0
     for i in range(n):
         if not deciding[i]:
             continue
         vx[i], vy[i] = hx[i], hy[i]
         if bit(routed_next[i >> 6], i):
+            if no_term:
+                vx[i] = vy[i] = 0.0
             continue
         neighbours = False
         candidates = False
@@ -135,7 +183,10 @@ def conb_headings(
                 neighbours = True
                 candidates |= bit(routed_next[j >> 6], j)
         if not neighbours:
+            if p.isolated == ISOLATED_HOME:
+                vx[i], vy[i] = unit(p.bs_x - px[i], p.bs_y - py[i], hx[i], hy[i])
             continue
+        candidates &= p.contacts != ALL_CONTACTS
         vix, viy = p.speed * hx[i], p.speed * hy[i]
         best = -1
         best_rank = -1.0
@@ -177,12 +228,15 @@ def blend(p: Params, cx: float, cy: float, vx: float, vy: float, hx: float,
     one of them, or ConCov's ``α R_cov + (1 − α) R_con`` re-scaled to length 1 (Eq. 12).
 
     At ``α = 1`` (``0``) Eq. 12 is exactly the CovB (ConB) direction and is used as such, so
-    those trajectories are identical to the pure rules'.
+    those trajectories are identical to the pure rules'. Where the two terms cancel, the drone
+    keeps its heading or, with ``concov_fallback = connectivity``, follows ConB's term.
     """
     if p.rule == COVB or (p.rule == CONCOV and p.alpha == 1.0):
         return cx, cy
     if p.rule == CONB or p.alpha == 0.0:
         return vx, vy
+    if p.concov_fallback == FALLBACK_CONNECTIVITY:
+        hx, hy = vx, vy
     return unit(p.alpha * cx + (1.0 - p.alpha) * vx, p.alpha * cy + (1.0 - p.alpha) * vy,
                 hx, hy)
 

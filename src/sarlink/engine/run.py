@@ -8,7 +8,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine.codes import LOOK_CODES, ON_DETECT_CODES, REPORTERS_CODES, STOP_CODES
+from sarlink.engine.codes import (
+    CHECK_CODES,
+    CONNECTED_CODES,
+    CONTACTS_CODES,
+    FALLBACK_CODES,
+    ISOLATED_CODES,
+    LOOK_CODES,
+    ON_DETECT_CODES,
+    REPORTERS_CODES,
+    STOP_CODES,
+)
 from sarlink.engine.kernel import simulate_kernel
 from sarlink.engine.params import Params
 from sarlink.engine.records import RunRecord
@@ -38,7 +48,7 @@ class Prepared:
         wp_start[1:] = np.cumsum([len(r) for r in routes])
         waypoints = np.concatenate([np.asarray(r, dtype=float).reshape(-1, 2) for r in routes])
         bs_x, bs_y = mission.area.bs_xy
-        t = mission.timing
+        t, r = mission.timing, mission.readings
         cp_steps = np.array(mission.checkpoint_steps(), dtype=np.int64)
         params = Params(
             size=mission.area.size, bs_x=bs_x, bs_y=bs_y, speed=mission.team.speed,
@@ -52,6 +62,10 @@ class Prepared:
             stop=int(STOP_CODES[t.stop]), record=False,
             on_detect=int(ON_DETECT_CODES[mission.team.on_detect]),
             reporters=int(REPORTERS_CODES[mission.team.reporters]),
+            conb_check=int(CHECK_CODES[r.conb_check]), contacts=int(CONTACTS_CODES[r.contacts]),
+            isolated=int(ISOLATED_CODES[r.isolated]),
+            concov_fallback=int(FALLBACK_CODES[r.concov_fallback]),
+            concov_connected=int(CONNECTED_CODES[r.concov_connected]),
         )
         return cls(mission=mission, params=params, distributed=steering.distributed(n),
                    waypoints=waypoints, wp_start=wp_start, cp_steps=cp_steps)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -163,6 +164,6 @@ def plan_time_missions(iterations: int | None = None) -> list[Mission]:
 
     ``iterations`` overrides the GA's (the paper's 5000) for quick tests only.
     """
-    extra = {} if iterations is None else {"iterations": iterations}
+    extra: dict[str, Any] = {} if iterations is None else {"iterations": iterations}
     return [Mission.build(planner=p, drones=n, rc=500.0, **extra)
             for p in PLAN_TIME_PLANNERS for n in DRONES]

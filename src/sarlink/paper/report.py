@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from sarlink.config import Mission
+from sarlink.config import DEFAULT_READING, Mission, Reading, get_reading
 from sarlink.paper.beyond import beyond_text
 from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import (
@@ -35,7 +35,7 @@ from sarlink.paper.experiments import (
     TD_SHORT,
 )
 from sarlink.paper.figures import FIGURES
-from sarlink.paper.findings import CLAIMS, DEFAULT_SETTINGS, Finding, Settings, tally
+from sarlink.paper.findings import CLAIMS, Finding, tally
 from sarlink.planners import get_planner, planner_names
 
 __all__ = ["ReplayLink", "Stage", "machine", "write_report"]
@@ -121,8 +121,8 @@ def _pairs(rows: Sequence[tuple[str, str]], header: tuple[str, str]) -> pd.DataF
     return pd.DataFrame(list(rows), columns=list(header))
 
 
-def _setting(runs: int, quick: bool) -> list[_Block]:
-    m = Mission()
+def _setting(runs: int, quick: bool, reading: Reading) -> list[_Block]:
+    m = Mission.build(reading=reading.name)
     labels = ", ".join(get_planner(p).label for p in planner_names())
     rows = [
         ("area a × a", f"{m.area.size:g} m × {m.area.size:g} m, BS at the centre"),
@@ -139,6 +139,8 @@ def _setting(runs: int, quick: bool) -> list[_Block]:
         ("target durations t_d", f"Fig. 2: {CURVE_TDS[0]:g} to {CURVE_TDS[-1]:g} s; Fig. 3: "
                                  f"{TD_FIG3:g} s; Figs. 4–6, 7b: {TD_LONG:g} s; "
                                  f"Fig. 7a: {TD_SHORT:g} s"),
+        ("reading of what the paper leaves open", f"{reading.name}: {reading.about}"),
+        *((f"reading: {name}", value) for name, value in reading.choices.items()),
         ("Fig. 7a miss probabilities (one look per pass)", ", ".join(f"{p:g}" for p in P_MISS)),
         ("Fig. 7b shadowing", f"σ = {SIGMA:g} dB, n = {m.channel.pathloss_exponent:g}"),
         ("runs per grid point", f"{runs}" + (" (quick; the paper's is 2000)" if quick else "")),
@@ -161,12 +163,37 @@ def _timing(seconds: float, stages: Sequence[Stage], workers: str) -> list[_Bloc
     ]
 
 
+@dataclass(frozen=True)
+class Sensitivity:
+    """What each claim depends on: outcomes under single changes of the reading."""
+
+    matrix: pd.DataFrame
+    """Claim × change (columns ``figure``, ``claim``, ``default``, then one per change)."""
+    flips: list[str]
+    """Each claim a single change flips, with the number that decides it."""
+
+
+def _sensitivity(study: Sensitivity | None) -> list[_Block]:
+    if study is None:
+        return []
+    changes = [c for c in study.matrix.columns if c not in ("figure", "claim", "default")]
+    return [
+        _Heading("What each finding depends on", 2),
+        _Para(f"Every claim decided again under each single change of the reading "
+              f"({len(changes)} changes: {', '.join(changes)}), on runs of their own for the "
+              "planners a change reaches (the others' runs are shared). Flipped outcomes "
+              f"({len(study.flips)}), with the number that decides each:"),
+        _List(study.flips or ["none: no single change flips a claim"]),
+        _Table(study.matrix, "The whole matrix: claim × change"),
+    ]
+
+
 _CSS_CLASS = {Outcome.HOLDS: "holds", Outcome.CONTRADICTED: "fails",
               Outcome.UNDECIDED: "undecided"}
 
 
 def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
-            settings: Settings) -> list[_Block]:
+            reading: Reading) -> list[_Block]:
     """The paper's claims grouped by figure, each with its outcome, criterion and numbers."""
     unchecked = [c for c in CLAIMS if not c.checkable(tables)]
     blocks: list[_Block] = [_Heading("The paper's claims", 2)]
@@ -186,7 +213,7 @@ def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
               "part of it, is contradicted where they exclude a part, and is otherwise "
               "undecided at this sample size (more runs per point can settle it). "
               f"Fig. 3's t_d, which the paper does not state, is taken as "
-              f"{settings.td_fig3:g} s."),
+              f"{reading.td_fig3:g} s (reading {reading.name!r})."),
         _Table(pd.DataFrame([(f.figure, f.claim, f.outcome.value) for f in findings],
                             columns=["figure", "claim", "outcome"])),
     ]
@@ -246,14 +273,16 @@ def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
 
 def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
               tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
-              settings: Settings, stages: Sequence[Stage], seconds: float, workers: str,
-              replay: ReplayLink | None) -> list[_Block]:
+              reading: Reading, stages: Sequence[Stage], seconds: float, workers: str,
+              replay: ReplayLink | None, sensitivity: Sensitivity | None) -> list[_Block]:
     intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
              "\"Connectivity considerations for mission planning of a search and rescue drone "
              f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
-             f"{runs} runs per grid point.")
+             f"{runs} runs per grid point, under the reading {reading.name!r} of what the paper "
+             "leaves open (docs/model.md, Readings).")
     return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
-            *_claims(findings, tables, settings), *_setting(runs, quick),
+            *_claims(findings, tables, reading), *_sensitivity(sensitivity),
+            *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
             *_beyond(tables), *_figures(out, figures, tables), *_replay(out, replay)]
 
@@ -343,18 +372,20 @@ def _html(blocks: Sequence[_Block], out: Path) -> str:
 def write_report(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
                  tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
                  stages: Sequence[Stage], seconds: float, workers: str,
-                 settings: Settings = DEFAULT_SETTINGS,
-                 replay: ReplayLink | None = None) -> tuple[Path, Path]:
+                 reading: Reading | None = None, replay: ReplayLink | None = None,
+                 sensitivity: Sensitivity | None = None) -> tuple[Path, Path]:
     """Write ``out/report.md`` and ``out/report.html``; return their paths.
 
     ``figures`` maps figure numbers to their PNG files inside ``out``; ``tables`` holds the
     summary tables the figures were drawn from and ``findings`` the claims checked on them,
-    under ``settings``; ``workers`` says what ran the simulations; ``replay`` is a replay page
-    inside ``out`` to link.
+    under ``reading`` (default: the default reading); ``workers`` says what ran the
+    simulations; ``replay`` is a replay page inside ``out`` to link; ``sensitivity`` what the
+    claims depend on.
     """
     blocks = _document(out, runs=runs, quick=quick, figures=figures, tables=tables,
-                       findings=findings, settings=settings, stages=stages, seconds=seconds,
-                       workers=workers, replay=replay)
+                       findings=findings, reading=reading or get_reading(DEFAULT_READING),
+                       stages=stages, seconds=seconds, workers=workers, replay=replay,
+                       sensitivity=sensitivity)
     md, page = out / "report.md", out / "report.html"
     md.write_text(_markdown(blocks), encoding="utf-8")
     page.write_text(_html(blocks, out), encoding="utf-8")

@@ -2,10 +2,13 @@
 
 Layout of the output folder::
 
-    runs/<experiment>/     the sweeps (sarlink.sweep folders: resumable, loadable with load)
+    runs/<experiment>/<planner>/<choices>/
+                           the sweeps, one per planner and the reading's choices that reach
+                           it (sarlink.sweep folders: resumable, loadable with load; shared
+                           by readings and by the sensitivity analysis)
     plan_times.json        Fig. 1's measured plan times, with their setting and machine
     tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
-                           plan_times
+                           plan_times, and sensitivity (claim × single change of the reading)
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
     replay-rc500.html      one run flown by every planner, replayed side by side (linked)
@@ -22,8 +25,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from sarlink.config import ConfigError, Mission
-from sarlink.execution import sweep
+from sarlink.config import DEFAULT_READING, ConfigError, Mission, get_reading
 from sarlink.paper.experiments import (
     EXPERIMENTS,
     QUICK_RUNS,
@@ -32,8 +34,9 @@ from sarlink.paper.experiments import (
     plan_time_missions,
 )
 from sarlink.paper.figures import FIGURES, save
-from sarlink.paper.findings import DEFAULT_SETTINGS, Finding, Settings, check_all
-from sarlink.paper.report import ReplayLink, Stage, machine, write_report
+from sarlink.paper.findings import Finding, Settings, check_all
+from sarlink.paper.report import ReplayLink, Sensitivity, Stage, machine, write_report
+from sarlink.paper.variants import Variant, flips, matrix, reading_tables, sensitivity
 from sarlink.planners import get_planner, planner_names
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
@@ -65,6 +68,10 @@ class ReproductionResult:
     stages: list[Stage]
     replay: Path
     """The side-by-side replay of one run at r_c = 500 m that the report links."""
+    reading: str
+    """The name of the reading the runs were made under."""
+    variants: list[Variant]
+    """With ``sensitivity``: the claims under each single change of the reading."""
 
 
 def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
@@ -103,11 +110,11 @@ def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
         table.to_parquet(folder / f"{name}.parquet", index=False)
 
 
-def _replay(out: Path) -> ReplayLink:
+def _replay(out: Path, reading: str) -> ReplayLink:
     """Every planner flying one run at r_c = 500 m, side by side (``replay-rc500.html``): the
     first run of the paper's seed that every planner notifies, so that each panel shows a
     detection and the multihop path that carried it to the BS."""
-    mission = Mission.build(drones=10, rc=500.0)
+    mission = Mission.build(reading=reading, drones=10, rc=500.0)
     planners = planner_names()
     run = next((k for k in range(100) if all(
         simulate(mission.replace(planner=p), seed=SEED, run=k).t_notify is not None
@@ -126,8 +133,8 @@ def _replay(out: Path) -> ReplayLink:
 def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
               figures: Iterable[int] | None = None, workers: int | None = None,
               scheduler: str | None = None, progress: bool = True,
-              plan_iterations: int | None = None,
-              settings: Settings = DEFAULT_SETTINGS) -> ReproductionResult:
+              plan_iterations: int | None = None, reading: str = DEFAULT_READING,
+              sensitivity_analysis: bool = False) -> ReproductionResult:
     """Rerun the experiments behind the paper's figures into ``out`` and report on them.
 
     Only the sweeps the requested figures need are run; runs already stored in ``out`` (by an
@@ -149,8 +156,13 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     plan_iterations
         GA iterations for Fig. 1's mTSP timing instead of the paper's 5000 (for tests only:
         the time depends on it).
-    settings
-        The choices the paper leaves open that the claims' checks depend on.
+    reading
+        The named reading of what the paper leaves open (:data:`sarlink.config.READINGS`):
+        the rules' choices for every run, and Fig. 3's t_d for the claims.
+    sensitivity_analysis
+        Also decide every claim under each single change of the reading, rerunning only the
+        experiments of Figs. 2-7 and only the planners a change reaches; the report gets the
+        matrix claim × change.
     """
     start = time.perf_counter()
     out = Path(out)
@@ -158,21 +170,11 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     runs = runs if runs is not None else QUICK_RUNS if quick else RUNS
     if runs < 1:
         raise ConfigError(f"runs must be at least 1, got {runs}")
-    stages: list[Stage] = []
-    tables: dict[str, pd.DataFrame] = {}
-    for exp in EXPERIMENTS.values():
-        if not set(exp.figures) & set(numbers):
-            continue
-        t0 = time.perf_counter()
-        folder = out / "runs" / exp.name
-        resumed = (folder / "experiment.json").exists()
-        experiment = exp.build(runs)
-        tables.update(exp.tables(sweep(experiment, folder, workers=workers, scheduler=scheduler,
-                                       progress=progress)))
-        points = len(experiment.points())
-        stages.append(Stage(f"sweep {exp.name}", f"{experiment.name}: {points} grid points × "
-                            f"{runs} runs" + (" (resumed)" if resumed else ""),
-                            time.perf_counter() - t0))
+    chosen = get_reading(reading)
+    settings = Settings(td_fig3=chosen.td_fig3)
+    needed = [e for e in EXPERIMENTS.values() if set(e.figures) & set(numbers)]
+    tables, stages = reading_tables(out / "runs", needed, runs, chosen.choices,
+                                    workers=workers, scheduler=scheduler, progress=progress)
     if 1 in numbers:
         t0 = time.perf_counter()
         missions = plan_time_missions(plan_iterations)
@@ -189,8 +191,17 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         drawn[n] = save(spec.draw(*(tables[t] for t in spec.tables)), out / "figures", f"fig{n}")
     stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
                         time.perf_counter() - t0))
+    done: list[Variant] = []
+    study = None
+    if sensitivity_analysis:
+        checked = [e for e in needed if set(e.figures) & set(range(1, 8))]
+        done, timed = sensitivity(chosen, tables, out / "runs", checked, runs, workers=workers,
+                                  scheduler=scheduler, progress=progress)
+        stages += timed
+        study = Sensitivity(matrix(findings, done), flips(findings, done))
+        _write_tables(out / "tables", {"sensitivity": study.matrix})
     t0 = time.perf_counter()
-    replay = _replay(out)
+    replay = _replay(out, reading)
     stages.append(Stage("replay", f"{replay.page.name}: one run by each planner",
                         time.perf_counter() - t0))
     seconds = time.perf_counter() - start
@@ -199,6 +210,6 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     md, page = write_report(out, runs=runs, quick=quick,
                             figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
                             findings=findings, stages=stages, seconds=seconds, workers=where,
-                            settings=settings, replay=replay)
+                            reading=chosen, replay=replay, sensitivity=study)
     return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages,
-                              replay.page)
+                              replay.page, reading, done)

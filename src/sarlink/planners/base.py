@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Protocol
 
+from sarlink.engine.codes import Rule
 from sarlink.engine.steering import Steering
 
 if TYPE_CHECKING:
@@ -31,6 +32,12 @@ class Planner(Protocol):
     @property
     def marker(self) -> str:
         """Its marker in every figure (a Matplotlib marker)."""
+        ...
+
+    @property
+    def rule(self) -> Rule:
+        """The rule its distributed drones run (``Rule.NONE``: routes only); which of the
+        paper's readings reach it (:data:`sarlink.config.readings.AFFECTS`)."""
         ...
 
     def steering(self, mission: Mission) -> Steering:

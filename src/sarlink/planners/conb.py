@@ -18,6 +18,7 @@ class ConB:
     label: str = "ConB"
     colour: str = "#2ca02c"
     marker: str = "^"
+    rule: Rule = Rule.CONB
 
     def steering(self, mission: Mission) -> Steering:
-        return Steering(rule=Rule.CONB, alpha=0.0)
+        return Steering(rule=self.rule, alpha=0.0)

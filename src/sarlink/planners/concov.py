@@ -18,6 +18,7 @@ class ConCov:
     label: str = "ConCov"
     colour: str = "#9467bd"
     marker: str = "v"
+    rule: Rule = Rule.CONCOV
 
     def steering(self, mission: Mission) -> Steering:
-        return Steering(rule=Rule.CONCOV, alpha=mission.team.alpha)
+        return Steering(rule=self.rule, alpha=mission.team.alpha)

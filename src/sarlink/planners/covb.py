@@ -18,6 +18,7 @@ class CovB:
     label: str = "CovB"
     colour: str = "#ff7f0e"
     marker: str = "s"
+    rule: Rule = Rule.COVB
 
     def steering(self, mission: Mission) -> Steering:
-        return Steering(rule=Rule.COVB, alpha=1.0)
+        return Steering(rule=self.rule, alpha=1.0)

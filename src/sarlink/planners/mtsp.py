@@ -18,10 +18,11 @@ class Mtsp:
     label: str = "mTSP"
     colour: str = "#1f77b4"
     marker: str = "o"
+    rule: Rule = Rule.NONE
 
     def steering(self, mission: Mission) -> Steering:
         # imported here so that the registry loads without Numba kernels or OR-Tools
         from sarlink.mtsp import plan_for
 
         routes = plan_for(mission, mission.team.drones).routes()
-        return Steering(rule=Rule.NONE, routes=routes)
+        return Steering(rule=self.rule, routes=routes)

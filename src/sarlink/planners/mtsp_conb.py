@@ -20,6 +20,7 @@ class MtspConB:
     label: str = "mTSP-ConB"
     colour: str = "#d62728"
     marker: str = "D"
+    rule: Rule = Rule.CONB
 
     def steering(self, mission: Mission) -> Steering:
         # imported here so that the registry loads without Numba kernels or OR-Tools
@@ -29,4 +30,4 @@ class MtspConB:
         planned = min(mission.team.nr, drones)
         routes = plan_for(mission, planned).routes()
         relays = tuple(np.empty((0, 2)) for _ in range(drones - planned))
-        return Steering(rule=Rule.CONB, alpha=0.0, routes=routes + relays)
+        return Steering(rule=self.rule, alpha=0.0, routes=routes + relays)

@@ -1,0 +1,88 @@
+"""Named readings of the paper: sets of the choices it leaves open (docs/model.md, Readings).
+
+A reading fixes every field of :class:`~sarlink.config.mission.Readings` (how the distributed
+rules read the paper) and Fig. 3's target duration, which the paper does not state. The
+default reading is what ``Mission()`` gives; it was chosen by measurement (docs/model.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from sarlink.config.base import ConfigError
+
+__all__ = ["AFFECTS", "DEFAULT_READING", "READINGS", "Reading", "get_reading", "relevant"]
+
+AFFECTS: dict[str, frozenset[str]] = {
+    "conb_check": frozenset({"conb", "concov"}),
+    "contacts": frozenset({"conb", "concov"}),
+    "isolated": frozenset({"conb", "concov"}),
+    "concov_fallback": frozenset({"concov"}),
+    "concov_connected": frozenset({"concov"}),
+}
+"""Each choice, and the distributed rules (by name: a planner's ``rule.name.lower()``) whose
+runs it can change; a team of another rule flies the same under every value."""
+
+
+def relevant(rule: str) -> list[str]:
+    """The choices that can change the runs of a team whose distributed rule is ``rule``."""
+    return [choice for choice, rules in AFFECTS.items() if rule in rules]
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One named set of choices."""
+
+    name: str
+    about: str
+    """Which words of the paper it follows."""
+    choices: dict[str, str] = field(default_factory=dict)
+    """Every field of :class:`~sarlink.config.mission.Readings`, by name."""
+    td_fig3: float = 2000.0
+    """Fig. 3's target duration t_d, s (the claims of Figs. 2-3 read P_s there)."""
+
+
+READINGS: dict[str, Reading] = {r.name: r for r in (
+    Reading(
+        "literal",
+        "closest to the paper's words: the connectivity check at every increment of the sensing "
+        "period (Section 3.2), j among all neighbours (Eq. 11's 'the neighbor of UAV i'), "
+        "R_con = the heading while connected (Algorithm 2), and Fig. 3 at t_d = 4000 s (the "
+        "only t_d the text names with it)",
+        {"conb_check": "continuous", "contacts": "all", "isolated": "keep",
+         "concov_fallback": "heading", "concov_connected": "heading"},
+        td_fig3=4000.0,
+    ),
+    Reading(
+        "sarlink-1",
+        "the readings of sarlink 1: the check once per sensing period (Algorithm 1's 'Check if t_s "
+        "sec has elapsed'), j among the neighbours that keep a route to the BS, Fig. 3 at "
+        "t_d = 2000 s",
+        {"conb_check": "period", "contacts": "routed", "isolated": "keep",
+         "concov_fallback": "heading", "concov_connected": "heading"},
+        td_fig3=2000.0,
+    ),
+    Reading(
+        "sarlink-2",
+        "the connectivity check at every increment of the sensing period (Section 3.2's "
+        "words), j among the neighbours that keep a route to the BS (Section 3.2: the "
+        "connectivity 'of a given UAV i to the BS as well as its neighbors is checked'), and "
+        "where Eq. 12's two terms cancel, ConCov follows ConB's 'attraction force against "
+        "disconnections'; Fig. 3 at t_d = 2000 s",
+        {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
+         "concov_fallback": "connectivity", "concov_connected": "heading"},
+        td_fig3=2000.0,
+    ),
+)}
+"""The presets by name."""
+
+DEFAULT_READING = "sarlink-1"
+"""The reading ``Mission()`` gives and ``sarlink reproduce`` uses unless told otherwise."""
+
+
+def get_reading(name: str) -> Reading:
+    """The reading called ``name``; a clear error naming the known ones otherwise."""
+    try:
+        return READINGS[name]
+    except KeyError:
+        raise ConfigError(f"unknown reading {name!r}; known: {', '.join(READINGS)}") from None

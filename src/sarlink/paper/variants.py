@@ -1,0 +1,149 @@
+"""The paper's experiments under a reading, and what each claim depends on (``--sensitivity``).
+
+A reading (:mod:`sarlink.config.readings`) sets the choices the paper leaves open. Most
+choices reach only some planners (ConB's connectivity check changes nothing for CovB), so
+every experiment is swept one planner at a time, in a folder named after the choices that
+reach that planner: ``runs/<experiment>/<planner>/<values>``. Two readings that agree on what
+reaches a planner share its runs, so the sensitivity analysis, which changes one choice at a
+time, reruns only the planners that choice reaches. A choice that reaches no planner of a
+team is stored with its ``sarlink-1`` value, on which it has no effect.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import get_args
+
+import pandas as pd
+
+from sarlink.config import READINGS, Experiment, Reading, Readings
+from sarlink.config.readings import relevant
+from sarlink.execution import sweep
+from sarlink.paper.evidence import Outcome
+from sarlink.paper.experiments import PaperExperiment
+from sarlink.paper.findings import Finding, Settings, check_all
+from sarlink.paper.report import Stage
+from sarlink.planners import get_planner
+
+__all__ = ["FIG3_TDS", "Variant", "reading_tables", "sensitivity", "variants"]
+
+FIG3_TDS = (1000.0, 2000.0, 4000.0)
+"""The candidates for Fig. 3's unstated t_d, s: those the main table holds."""
+
+_NEUTRAL = READINGS["sarlink-1"].choices
+"""The values stored for choices that cannot reach a planner."""
+
+
+def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
+                    ) -> Iterator[tuple[Path, Experiment]]:
+    """``exp`` split by planner, each with the choices that reach it: (folder, experiment)."""
+    experiment = exp.build(runs)
+    grid = {k: v for k, v in experiment.grid.items() if k != "planner"}
+    for name in experiment.grid["planner"]:
+        planner = get_planner(name)
+        reach = relevant(planner.rule.name.lower())
+        mission = experiment.mission.replace(
+            planner=name, **{c: choices[c] if c in reach else _NEUTRAL[c] for c in _NEUTRAL})
+        values = "-".join(choices[c] for c in reach) or "any"
+        yield (Path(exp.name) / name / values,
+               Experiment(name=f"{experiment.name}, {planner.label}", seed=experiment.seed,
+                          runs=runs, mission=mission, grid=grid))
+
+
+def reading_tables(runs_folder: Path, experiments: Iterable[PaperExperiment], runs: int,
+                   choices: dict[str, str], *, workers: int | None = None,
+                   scheduler: str | None = None, progress: bool = True,
+                   ) -> tuple[dict[str, pd.DataFrame], list[Stage]]:
+    """The summary tables of ``experiments`` under ``choices``, from runs stored (or resumed)
+    under ``runs_folder``, and how long each experiment took."""
+    tables: dict[str, pd.DataFrame] = {}
+    stages = []
+    for exp in experiments:
+        t0 = time.perf_counter()
+        frames, resumed, points = [], 0, 0
+        for folder, experiment in _planner_sweeps(exp, runs, choices):
+            resumed += (runs_folder / folder / "experiment.json").exists()
+            points += len(experiment.points())
+            frames.append(sweep(experiment, runs_folder / folder, workers=workers,
+                                scheduler=scheduler, progress=progress))
+        tables.update(exp.tables(pd.concat(frames, ignore_index=True)))
+        stages.append(Stage(f"sweep {exp.name}", f"{exp.build(runs).name}: {points} grid "
+                            f"points × {runs} runs" + (f" ({resumed} planners' sweeps resumed "
+                                                       "or shared)" if resumed else ""),
+                            time.perf_counter() - t0))
+    return tables, stages
+
+
+@dataclass(frozen=True)
+class Variant:
+    """The default reading with one choice changed, and the claims decided under it."""
+
+    choice: str
+    """A field of :class:`~sarlink.config.mission.Readings`, or ``td_fig3``."""
+    value: str
+    findings: tuple[Finding, ...] = ()
+
+    @property
+    def name(self) -> str:
+        return f"{self.choice}={self.value}"
+
+
+def variants(reading: Reading) -> list[Variant]:
+    """Every single choice changed from ``reading``: each other value of each choice."""
+    out = [Variant(c, v) for c, field in Readings.model_fields.items()
+           for v in get_args(field.annotation) if v != reading.choices[c]]
+    return out + [Variant("td_fig3", f"{td:g}") for td in FIG3_TDS if td != reading.td_fig3]
+
+
+def sensitivity(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Path,
+                experiments: list[PaperExperiment], runs: int, *, workers: int | None = None,
+                scheduler: str | None = None, progress: bool = True,
+                ) -> tuple[list[Variant], list[Stage]]:
+    """The claims under every single change of ``reading``: each mission choice reruns
+    ``experiments`` (sharing the runs of the planners it does not reach); Fig. 3's t_d
+    only rereads ``base``, the tables under ``reading``."""
+    done, stages = [], []
+    for variant in variants(reading):
+        settings = Settings(td_fig3=reading.td_fig3)
+        tables = base
+        if variant.choice == "td_fig3":
+            settings = Settings(td_fig3=float(variant.value))
+        else:
+            choices = {**reading.choices, variant.choice: variant.value}
+            changed, timed = reading_tables(runs_folder, experiments, runs, choices,
+                                            workers=workers, scheduler=scheduler,
+                                            progress=progress)
+            tables = {**base, **changed}
+            stages += [replace(s, name=f"{s.name} ({variant.name})") for s in timed]
+        done.append(replace(variant, findings=tuple(check_all(tables, settings))))
+    return done, stages
+
+
+SYMBOL = {Outcome.HOLDS: "holds", Outcome.CONTRADICTED: "contradicted",
+          Outcome.UNDECIDED: "undecided"}
+
+
+def matrix(findings: list[Finding], done: list[Variant]) -> pd.DataFrame:
+    """Claim × reading: the outcome under the default and under each single change."""
+    rows = []
+    for k, f in enumerate(findings):
+        row = {"figure": f.figure, "claim": f.claim, "default": SYMBOL[f.outcome]}
+        for v in done:
+            row[v.name] = SYMBOL[v.findings[k].outcome]
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def flips(findings: list[Finding], done: list[Variant]) -> list[str]:
+    """Each claim whose outcome a single change flips, with the number that decides it."""
+    out = []
+    for v in done:
+        for before, after in zip(findings, v.findings, strict=True):
+            if after.outcome is not before.outcome:
+                part = (after.against or after.parts)[0]
+                out.append(f"{v.name}: {after.figure} \"{after.claim}\" {before.outcome.value}"
+                           f" → {after.outcome.value} ({part.text})")
+    return out
