@@ -77,10 +77,11 @@ def run_once(kernel: ModuleType, mission: Mission, seed: int, run: int) -> tuple
     return time.perf_counter() - start, out
 
 
-def measure(old_source: str, case: str, runs: int, rounds: int, new_first: bool) -> None:
+def measure(old_source: str, case: str, runs: int, rounds: int, new_first: bool,
+            reading: str) -> None:
     """Print ``identical speed-up`` for one case, with the kernels compiled in one order."""
     planner, drones, *rest = case.split(":")
-    mission = Mission.build(planner=planner, drones=int(drones),
+    mission = Mission.build(reading=reading, planner=planner, drones=int(drones),
                             rc=float(rest[0]) if rest else 1000.0,
                             sigma=float(rest[1]) if len(rest) > 1 else 0.0)
     with tempfile.TemporaryDirectory() as tmp:
@@ -109,19 +110,24 @@ def main() -> None:
                         help="planner:drones[:rc[:sigma]] items, comma-separated")
     parser.add_argument("--runs", type=int, default=10)
     parser.add_argument("--rounds", type=int, default=6)
+    parser.add_argument("--reading", default="sarlink-1",
+                        help="the reading of the paper to fly (default: sarlink-1, the rules "
+                             "of kernels before readings were selectable)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
     old_source = subprocess.run(["git", "show", f"{args.rev}:{KERNEL}"], cwd=ROOT, check=True,
                                 capture_output=True, text=True).stdout
     if args.one:  # one compile order, in a process of its own
-        measure(old_source, args.cases, args.runs, args.rounds, args.one == "new-first")
+        measure(old_source, args.cases, args.runs, args.rounds, args.one == "new-first",
+                args.reading)
         return
     for case in args.cases.split(","):
         results = {}
         for order in ("old-first", "new-first"):
             out = subprocess.run([sys.executable, __file__, args.rev, "--cases", case,
                                   "--runs", str(args.runs), "--rounds", str(args.rounds),
-                                  "--one", order], check=True, capture_output=True, text=True)
+                                  "--reading", args.reading, "--one", order],
+                                 check=True, capture_output=True, text=True)
             same, ratio = out.stdout.split()
             results[order] = (int(same), float(ratio))
         same = min(s for s, _ in results.values())

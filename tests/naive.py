@@ -64,6 +64,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     r, rc = mission.sensing.r, mission.channel.rc
     planner = mission.team.planner
     alpha = {"covb": 1.0, "conb": 0.0}.get(planner, mission.team.alpha)
+    readings = mission.readings
     streams = run_streams(seed, run)
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
@@ -122,13 +123,19 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             return 0.0, 0.0
         return v * math.cos(heading[j]), v * math.sin(heading[j])
 
-    def conb(i: int, links: dict[int, set[int]], routed_next: set[int]) -> float:
+    def conb(i: int, links: dict[int, set[int]], routed_next: set[int]) -> float | None:
+        """ConB's direction; None for no term (ConCov, connected, concov_connected = none)."""
         if i in routed_next:
-            return heading[i]
+            none = planner == "concov" and readings.concov_connected == "none" and alpha > 0
+            return None if none else heading[i]
         neighbours = sorted(j for j in links[i] if j != TG)
         if not neighbours:
+            if readings.isolated == "home":
+                return math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
             return heading[i]
-        candidates = [j for j in neighbours if j in routed_next] or neighbours
+        candidates = neighbours
+        if readings.contacts == "routed":
+            candidates = [j for j in neighbours if j in routed_next] or neighbours
         vi = velocity(i)
 
         def contact(j: int) -> tuple[float, float, float]:
@@ -159,6 +166,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         if math.hypot(rx, ry) < 1e-9:
             return theta_ij
         return math.atan2(ry, rx)
+
+    def predicted(seconds: float) -> set[int]:
+        """Who has a route to the BS ``seconds`` ahead if every drone keeps its heading."""
+        ahead = [p if mode[j] == "landed" else
+                 (p[0] + v * seconds * math.cos(heading[j]),
+                  p[1] + v * seconds * math.sin(heading[j])) for j, p in enumerate(pos)]
+        return _component({BS}, link_graph(ahead, faded=False), blocked=TG)
 
     def inward(i: int, h: float) -> float:
         """Boundary rule: a uniform heading in the half (quarter) circle facing into the area."""
@@ -215,7 +229,12 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
 
         # decide
         new = list(heading)
+
         routed_next: set[int] | None = None
+        continuous = alpha < 1 and readings.conb_check == "continuous"
+        if continuous:  # routed at every increment up to t + t_s
+            routed_next = set.intersection(*(predicted(s * dt) for s in
+                                             range(1, round(ts / dt) + 1)))
         for i in range(n):
             if mode[i] != "search":
                 continue
@@ -226,25 +245,28 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                     new[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
                 continue
             h = heading[i]
-            if t - last_change[i] >= ts - 1e-9:
+            losing = continuous and routed_next is not None and i not in routed_next
+            if t - last_change[i] >= ts - 1e-9 or losing:
                 last_change[i] = t
                 cov = covb(i) if alpha > 0 else h
-                con = h
+                con: float | None = h
                 if alpha < 1:
                     if routed_next is None:
-                        ahead = [p if mode[j] == "landed" else
-                                 (p[0] + v * ts * math.cos(heading[j]),
-                                  p[1] + v * ts * math.sin(heading[j])) for j, p in enumerate(pos)]
-                        routed_next = _component({BS}, link_graph(ahead, faded=False), blocked=TG)
+                        routed_next = predicted(ts)
                     con = conb(i, links, routed_next)
                 if alpha == 1:
                     h = cov
                 elif alpha == 0:
-                    h = con
+                    h = h if con is None else con
+                elif con is None:
+                    h = cov
                 else:
                     rx = alpha * math.cos(cov) + (1 - alpha) * math.cos(con)
                     ry = alpha * math.sin(cov) + (1 - alpha) * math.sin(con)
-                    h = h if math.hypot(rx, ry) < 1e-12 else math.atan2(ry, rx)
+                    if math.hypot(rx, ry) >= 1e-12:
+                        h = math.atan2(ry, rx)
+                    elif readings.concov_fallback == "connectivity":
+                        h = con
             h2 = inward(i, h)
             if h2 != h:
                 last_change[i] = t

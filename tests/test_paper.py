@@ -21,10 +21,10 @@ import pandas as pd
 import pytest
 from typer.testing import CliRunner
 
-from sarlink import ConfigError, Mission, load
+from sarlink import ConfigError, Mission
 from sarlink.cli import app
 from sarlink.metrics import MEASURES, summarize, wilson
-from sarlink.paper import ReproductionResult, check_all, reproduce, tally
+from sarlink.paper import ReproductionResult, check_all, load_runs, reproduce, tally
 from sarlink.paper import findings as claims
 from sarlink.paper.evidence import Estimate, Outcome
 from sarlink.paper.experiments import (
@@ -81,7 +81,7 @@ def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: Reproductio
 
 def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
         quick: ReproductionResult) -> None:
-    runs = load(quick.out / "runs" / "main")
+    runs = load_runs(quick.out, "main")
     assert len(runs) == 10 * len(PLANNERS) * len(DRONES) * len(RANGES)
     recomputed = summarize(runs, td=[1000.0, 2000.0, 4000.0], by=["planner", "drones", "rc"])
     stored = pd.read_csv(quick.out / "tables" / "main.csv")
@@ -103,7 +103,7 @@ def _report_table(md: str, heading: str) -> list[list[str]]:
 def test_report_numbers_equal_those_recomputed_from_the_stored_runs(
         quick: ReproductionResult) -> None:
     md = quick.report_md.read_text()
-    main = summarize(load(quick.out / "runs" / "main"), td=[2000.0, 4000.0],
+    main = summarize(load_runs(quick.out, "main"), td=[2000.0, 4000.0],
                      by=["planner", "drones", "rc"])
     labels = {"mTSP": "mtsp", "CovB": "covb", "ConB": "conb", "mTSP-ConB": "mtsp-conb",
               "ConCov": "concov"}
@@ -120,7 +120,7 @@ def test_report_numbers_equal_those_recomputed_from_the_stored_runs(
                    & (main["rc"] == float(rc)) & (main["td"] == 4000.0)].iloc[0]
         assert cell == f"{row['reachability']:.3f} ± {row['reachability_se']:.3f}"
 
-    miss = summarize(load(quick.out / "runs" / "miss"), by=["planner", "p_miss"])
+    miss = summarize(load_runs(quick.out, "miss"), by=["planner", "p_miss"])
     fig7a = _report_table(md, "### Figure 7")
     assert len(fig7a) == len(miss)
     for label, p_miss, cell in fig7a:
@@ -131,7 +131,7 @@ def test_report_numbers_equal_those_recomputed_from_the_stored_runs(
 
 def test_claims_are_those_of_the_recomputed_tables_and_the_report_says_so(
         quick: ReproductionResult) -> None:
-    recomputed = summarize(load(quick.out / "runs" / "main"), td=[1000.0, 2000.0, 4000.0],
+    recomputed = summarize(load_runs(quick.out, "main"), td=[1000.0, 2000.0, 4000.0],
                            by=["planner", "drones", "rc"])
     assert quick.findings == check_all({**quick.tables, "main": recomputed})
     assert [f.claim for f in quick.findings] == [c.text for c in CLAIMS]  # every claim checked

@@ -9,12 +9,18 @@ a recorded heading at step k + 1 is the one decided at step k.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
+from typer.testing import CliRunner
 
-from sarlink import ConfigError, Mission, Scenario, simulate
+from sarlink import ConfigError, Mission, Scenario, load, simulate
+from sarlink.cli import app
 from sarlink.config import DEFAULT_READING, READINGS, Readings
+from sarlink.paper import ReproductionResult, reproduce
+from sarlink.paper.variants import SYMBOL, variants
 
 FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
@@ -114,7 +120,7 @@ def test_a_reading_preset_sets_the_choices_and_explicit_values_win() -> None:
     literal = Mission.build(reading="literal")
     assert literal.readings.model_dump() == READINGS["literal"].choices
     assert Mission.build(reading="literal", contacts="routed").readings.contacts == "routed"
-    with pytest.raises(ConfigError, match="unknown reading 'nope'; known: literal, sarlink-1, sarlink-2"):
+    with pytest.raises(ConfigError, match="unknown reading 'nope'; known: literal, sarlink-1"):
         Mission.build(reading="nope")
 
 
@@ -127,3 +133,60 @@ def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
         first, *rest = runs.values()
         assert all(r.t_notify == first.t_notify and r.t_detect == first.t_detect and
                    np.array_equal(r.reach_cum, first.reach_cum) for r in rest)
+
+
+# -- the readings in a reproduction -----------------------------------------------------------
+
+
+def test_the_variants_change_one_choice_to_each_other_value() -> None:
+    names = [v.name for v in variants(READINGS["sarlink-1"])]
+    assert names == ["conb_check=continuous", "contacts=all", "isolated=home",
+                     "concov_fallback=connectivity", "concov_connected=none", "td_fig3=1000",
+                     "td_fig3=4000"]
+    assert [v.name for v in variants(READINGS["literal"])][:2] == ["conb_check=period",
+                                                                   "contacts=routed"]
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
+    """Fig. 7 (its sweeps stop early: seconds) with the sensitivity analysis, 3 runs a point."""
+    return reproduce(tmp_path_factory.mktemp("sensitivity"), runs=3, figures=[7],
+                     progress=False, workers=1, sensitivity_analysis=True)
+
+
+def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult) -> None:
+    folders = {p.name: sorted(f.name for f in p.iterdir())
+               for p in (study.out / "runs" / "miss").iterdir()}
+    assert folders["covb"] == folders["mtsp"] == ["any"]
+    assert folders["conb"] == folders["mtsp-conb"] == sorted(
+        ["period-routed-keep", "continuous-routed-keep", "period-all-keep", "period-routed-home"])
+    assert len(folders["concov"]) == 6  # the reading and each of its five changes
+
+
+def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
+    """The stored runs of ConB under the continuous check are those simulated directly."""
+    runs = load(study.out / "runs" / "miss" / "conb" / "continuous-routed-keep")
+    for row in runs.itertuples():
+        mission = Mission.build(reading="sarlink-1", conb_check="continuous", planner="conb",
+                                drones=10, rc=500.0, horizon=1000.0, stop="detected",
+                                p_miss=row.p_miss)
+        direct = simulate(mission, seed=row.seed, run=row.run)
+        assert (direct.t_detect or math.nan) == pytest.approx(row.t_detect, nan_ok=True)
+
+
+def test_the_report_holds_the_matrix_and_every_flip(study: ReproductionResult) -> None:
+    matrix = pd.read_csv(study.out / "tables" / "sensitivity.csv")
+    changes = [v.name for v in study.variants]
+    assert list(matrix.columns) == ["figure", "claim", "default", *changes]
+    assert list(matrix["default"]) == [SYMBOL[f.outcome] for f in study.findings]
+    flipped = int((matrix[changes].to_numpy() != matrix[["default"]].to_numpy()).sum())
+    md = study.report_md.read_text()
+    section = md[md.index("## What each finding depends on"):].split("\n## ")[0]
+    assert f"Flipped outcomes ({flipped})" in section
+    assert section.count("\n- ") == max(flipped, 1)
+
+
+def test_reproduce_names_an_unknown_reading(tmp_path: Path) -> None:
+    out = CliRunner().invoke(app, ["reproduce", "--reading", "nope", "--out", str(tmp_path)])
+    assert out.exit_code == 2
+    assert "unknown reading 'nope'; known: literal, sarlink-1" in out.output

@@ -24,6 +24,10 @@ CASES = {
     "concov-shadowing": {"planner": "concov", "sigma": 3.0},
     "covb-misses-per-period": {"planner": "covb", "p_miss": 0.4, "look": "per-period"},
     "conb-landing": {"planner": "conb", "flight_time": 700.0},
+    # the readings of the paper (docs/model.md, Readings)
+    "conb-literal-home": {"planner": "conb", "reading": "literal", "isolated": "home"},
+    "concov-sarlink-2-none": {"planner": "concov", "reading": "sarlink-2",
+                              "concov_connected": "none"},
 }
 
 

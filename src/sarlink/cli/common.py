@@ -11,7 +11,7 @@ import typer
 from rich.console import Console
 
 from sarlink.cli.errors import err_console, user_errors
-from sarlink.config import ConfigError, Mission, param_groups
+from sarlink.config import ConfigError, Mission, get_reading, param_groups
 
 __all__ = ["build_mission", "console", "err_console", "output_folder", "plot_file",
            "print_json", "user_errors"]
@@ -20,13 +20,16 @@ console = Console()
 
 
 def build_mission(config: Path | None, flags: Mapping[str, str] | None = None,
-                  **overrides: Any) -> Mission:
-    """The mission of a TOML file (or the paper's defaults) with the given flags applied.
+                  reading: str | None = None, **overrides: Any) -> Mission:
+    """The mission of a TOML file (or the paper's defaults), with a named ``reading`` of the
+    paper (:data:`sarlink.config.READINGS`) and then the given flags applied.
 
     ``overrides`` are flat mission parameters; an error about one names the option the user
     typed: ``--param-name`` by default, or ``flags[param]`` (``{"horizon": "--td"}``).
     """
     base = Mission.from_toml(config) if config is not None else Mission()
+    if reading is not None:
+        base = base.replace(**get_reading(reading).choices)
     given = {name: value for name, value in overrides.items() if value is not None}
     try:
         return base.replace(**given)

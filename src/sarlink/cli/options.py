@@ -7,6 +7,8 @@ from typing import Annotated
 
 import typer
 
+from sarlink.config import READINGS
+
 Drones = Annotated[int | None, typer.Option(help="number of drones N_m")]
 Rc = Annotated[float | None, typer.Option(help="communication range r_c, m")]
 Seed = Annotated[int, typer.Option(help="experiment seed", min=0)]
@@ -22,4 +24,7 @@ PathlossExponent = Annotated[float | None, typer.Option(help="path-loss exponent
 Stop = Annotated[str | None, typer.Option(help="end the run at: horizon, detected, notified")]
 OnDetect = Annotated[str | None, typer.Option(
     help="after learning where the target is: continue (the paper) or report (fly to the BS)")]
+Reading = Annotated[str | None, typer.Option(
+    help=f"a named reading of what the paper leaves open ({', '.join(READINGS)}; "
+         "docs/model.md); it overrides the config's [readings], flags override both")]
 Config = Annotated[Path | None, typer.Option(help="mission TOML; flags override it")]

@@ -30,6 +30,7 @@ def replay(
     pathloss_exponent: options.PathlossExponent = None,
     stop: options.Stop = None,
     on_detect: options.OnDetect = None,
+    reading: options.Reading = None,
     config: options.Config = None,
     out: Annotated[Path, typer.Option("--out", "-o", help="the HTML file to write")
                    ] = Path("replay.html"),
@@ -43,7 +44,7 @@ def replay(
         mission = build_mission(
             config, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r, p_miss=p_miss,
             look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent, stop=stop,
-            on_detect=on_detect,
+            on_detect=on_detect, reading=reading,
         )
         page = compare(mission, names, seed, run)
         page.write(out)

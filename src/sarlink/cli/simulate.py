@@ -58,6 +58,7 @@ def simulate(
     pathloss_exponent: options.PathlossExponent = None,
     stop: options.Stop = None,
     on_detect: options.OnDetect = None,
+    reading: options.Reading = None,
     config: options.Config = None,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
@@ -73,7 +74,7 @@ def simulate(
             config, {"horizon": "--td", "sigma": "--shadowing-sigma"}, planner=planner,
             drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
             p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
-            stop=stop, on_detect=on_detect,
+            stop=stop, on_detect=on_detect, reading=reading,
         )
         result = run_simulation(mission, seed=seed, run=run,
                                 trajectory=plot is not None or html is not None)

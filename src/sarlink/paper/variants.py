@@ -12,23 +12,24 @@ team is stored with its ``sarlink-1`` value, on which it has no effect.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import get_args
 
 import pandas as pd
 
-from sarlink.config import READINGS, Experiment, Reading, Readings
+from sarlink.config import DEFAULT_READING, READINGS, Experiment, Reading, Readings, get_reading
 from sarlink.config.readings import relevant
-from sarlink.execution import sweep
+from sarlink.execution import sweep_all
 from sarlink.paper.evidence import Outcome
-from sarlink.paper.experiments import PaperExperiment
+from sarlink.paper.experiments import EXPERIMENTS, PaperExperiment
 from sarlink.paper.findings import Finding, Settings, check_all
 from sarlink.paper.report import Stage
 from sarlink.planners import get_planner
+from sarlink.storage import load
 
-__all__ = ["FIG3_TDS", "Variant", "reading_tables", "sensitivity", "variants"]
+__all__ = ["FIG3_TDS", "Variant", "load_runs", "reading_tables", "sensitivity", "variants"]
 
 FIG3_TDS = (1000.0, 2000.0, 4000.0)
 """The candidates for Fig. 3's unstated t_d, s: those the main table holds."""
@@ -53,28 +54,57 @@ def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
                           runs=runs, mission=mission, grid=grid))
 
 
-def reading_tables(runs_folder: Path, experiments: Iterable[PaperExperiment], runs: int,
+def load_runs(out: str | Path, experiment: str, reading: str = DEFAULT_READING
+              ) -> pd.DataFrame:
+    """The stored runs of one experiment of a reproduction in ``out`` (``main``, ``miss``,
+    ``shadowing``, ``report``) under ``reading``: one row per run, every planner."""
+    choices = get_reading(reading).choices
+    return pd.concat([load(Path(out) / "runs" / folder) for folder, _ in
+                      _planner_sweeps(EXPERIMENTS[experiment], 1, choices)], ignore_index=True)
+
+
+def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[PaperExperiment],
+           runs: int, *, workers: int | None, scheduler: str | None, progress: bool,
+           ) -> tuple[list[dict[str, pd.DataFrame]], Stage]:
+    """The summary tables of ``experiments`` under each set of choices in ``readings``, from
+    one sweep of every planner's runs they need (a folder shared by readings is swept once),
+    and how long it took."""
+    t0 = time.perf_counter()
+    wanted = [{exp.name: [folder for folder, _ in _planner_sweeps(exp, runs, choices)]
+               for exp in experiments} for choices in readings]
+    jobs = {folder: experiment for choices in readings for exp in experiments
+            for folder, experiment in _planner_sweeps(exp, runs, choices)}
+    resumed = sum((runs_folder / folder / "experiment.json").exists() for folder in jobs)
+    frames = dict(zip(jobs, sweep_all([(e, runs_folder / f) for f, e in jobs.items()],
+                                      workers=workers, scheduler=scheduler, progress=progress),
+                      strict=True))
+    tables = []
+    for folders in wanted:
+        mine: dict[str, pd.DataFrame] = {}
+        for exp in experiments:
+            mine.update(exp.tables(pd.concat([frames[f] for f in folders[exp.name]],
+                                             ignore_index=True)))
+        tables.append(mine)
+    points = sum(len(e.points()) for e in jobs.values())
+    stage = Stage(f"sweep {', '.join(e.name for e in experiments)}",
+                  f"{len(jobs)} sweeps (a planner under the choices that reach it), {points} "
+                  f"grid points × {runs} runs"
+                  + (f"; {resumed} found stored and resumed or reused" if resumed else ""),
+                  time.perf_counter() - t0)
+    return tables, stage
+
+
+def reading_tables(runs_folder: Path, experiments: list[PaperExperiment], runs: int,
                    choices: dict[str, str], *, workers: int | None = None,
                    scheduler: str | None = None, progress: bool = True,
                    ) -> tuple[dict[str, pd.DataFrame], list[Stage]]:
     """The summary tables of ``experiments`` under ``choices``, from runs stored (or resumed)
-    under ``runs_folder``, and how long each experiment took."""
-    tables: dict[str, pd.DataFrame] = {}
-    stages = []
-    for exp in experiments:
-        t0 = time.perf_counter()
-        frames, resumed, points = [], 0, 0
-        for folder, experiment in _planner_sweeps(exp, runs, choices):
-            resumed += (runs_folder / folder / "experiment.json").exists()
-            points += len(experiment.points())
-            frames.append(sweep(experiment, runs_folder / folder, workers=workers,
-                                scheduler=scheduler, progress=progress))
-        tables.update(exp.tables(pd.concat(frames, ignore_index=True)))
-        stages.append(Stage(f"sweep {exp.name}", f"{exp.build(runs).name}: {points} grid "
-                            f"points × {runs} runs" + (f" ({resumed} planners' sweeps resumed "
-                                                       "or shared)" if resumed else ""),
-                            time.perf_counter() - t0))
-    return tables, stages
+    under ``runs_folder``, and how long the sweep took."""
+    if not experiments:
+        return {}, []
+    (tables,), stage = _sweep(runs_folder, [choices], experiments, runs, workers=workers,
+                              scheduler=scheduler, progress=progress)
+    return tables, [stage]
 
 
 @dataclass(frozen=True)
@@ -103,22 +133,23 @@ def sensitivity(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Pa
                 scheduler: str | None = None, progress: bool = True,
                 ) -> tuple[list[Variant], list[Stage]]:
     """The claims under every single change of ``reading``: each mission choice reruns
-    ``experiments`` (sharing the runs of the planners it does not reach); Fig. 3's t_d
-    only rereads ``base``, the tables under ``reading``."""
-    done, stages = [], []
-    for variant in variants(reading):
-        settings = Settings(td_fig3=reading.td_fig3)
-        tables = base
-        if variant.choice == "td_fig3":
-            settings = Settings(td_fig3=float(variant.value))
-        else:
-            choices = {**reading.choices, variant.choice: variant.value}
-            changed, timed = reading_tables(runs_folder, experiments, runs, choices,
-                                            workers=workers, scheduler=scheduler,
-                                            progress=progress)
-            tables = {**base, **changed}
-            stages += [replace(s, name=f"{s.name} ({variant.name})") for s in timed]
-        done.append(replace(variant, findings=tuple(check_all(tables, settings))))
+    ``experiments`` (sharing the runs of the planners it does not reach), all in one sweep;
+    Fig. 3's t_d only rereads ``base``, the tables under ``reading``."""
+    todo = variants(reading)
+    changes = [v for v in todo if v.choice != "td_fig3"]
+    stages: list[Stage] = []
+    changed: list[dict[str, pd.DataFrame]] = []
+    if changes and experiments:
+        changed, stage = _sweep(runs_folder, [{**reading.choices, v.choice: v.value}
+                                              for v in changes], experiments, runs,
+                                workers=workers, scheduler=scheduler, progress=progress)
+        stages.append(replace(stage, name=f"{stage.name} (sensitivity)"))
+    tables = dict(zip((v.name for v in changes), changed, strict=False))
+    done = []
+    for v in todo:
+        td = float(v.value) if v.choice == "td_fig3" else reading.td_fig3
+        mine = {**base, **tables.get(v.name, {})}
+        done.append(replace(v, findings=tuple(check_all(mine, Settings(td_fig3=td)))))
     return done, stages
 
 
