@@ -32,7 +32,7 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "97074a56e16fc0f9"
+SOURCE_DIGEST = "231bc71316c11af2"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
