@@ -32,7 +32,7 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "231bc71316c11af2"
+SOURCE_DIGEST = "500dce62b412cb59"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
