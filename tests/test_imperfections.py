@@ -87,7 +87,7 @@ def test_fraction_of_links_up_at_distance_d_is_the_normal_cdf(sigma: float,
     rng = np.random.default_rng(17)
     for _ in range(draws):
         draw_shadowing(thr2, params, rng)
-        links(px, py, pz, thr2, adj, 0.0, adj[:0])
+        links(px, py, pz, thr2, adj, 0.0, adj, False)
         up += [[linked(adj, a, b) for b in range(m)] for a in range(m)]
     for a in range(m):
         for b in range(a + 1, m):

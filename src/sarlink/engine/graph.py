@@ -54,18 +54,19 @@ def linked(adj: np.ndarray, a: int, b: int) -> bool:
 @njit(cache=True, inline="always", error_model="numpy")
 def links(
     px: np.ndarray, py: np.ndarray, pz: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
-    r2: float, near: np.ndarray,
+    r2: float, near: np.ndarray, with_near: bool,
 ) -> None:
-    """Bitsets of the pairs within squared link range ``thr2[a, b]`` (``adj``) and, unless
-    ``near`` is empty, within squared sensing range ``r2`` (``near``).
+    """Bitsets of the pairs within squared link range ``thr2[a, b]`` (``adj``) and, if
+    ``with_near``, within squared sensing range ``r2`` (``near``).
 
+    A flag rather than an empty ``near``: choosing the array in the caller (``near if push
+    else near[:0]``) left this inlined call's array references counted at every step.
     Every row is computed whole, without branches, so that the loop vectorizes: this is
     several times faster than testing each pair once and mirroring the bit. The positions
     are padded (see :data:`sarlink.engine.geometry.FAR`): a row's length is the padded one.
     """
     m = adj.shape[0]
     mp = px.shape[0]
-    with_near = near.shape[0] > 0
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
         for w in range(adj.shape[1]):
@@ -154,8 +155,9 @@ def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.nda
             else:
                 add(spread, i)
     component(adj, n + 1, spread, stack)
-    if joined:
-        spread |= routed
+    if joined:  # word by word: ``spread |= routed`` kept the arguments' references counted
+        for w in range(spread.shape[0]):
+            spread[w] |= routed[w]
     for i in range(n):
         knows[i] = has(spread, i)
     return has(spread, n)

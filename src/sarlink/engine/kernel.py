@@ -33,7 +33,7 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "5b91c5fc3d7db85c"
+SOURCE_DIGEST = "7d2e840db65c3bd2"
 """Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
 
 
@@ -114,7 +114,7 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
                          and k - last_change[i] >= p.ts_steps)
                 if mode[i] != LANDED:
                     graph.add(flying, i)
-        graph.links(px, py, pz, thr2, adj, p.r * p.r, near if push else near[:0])
+        graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         graph.bs_component(adj, n, routed, stack)
         if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
             t_not = t
