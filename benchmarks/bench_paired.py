@@ -77,13 +77,18 @@ def run_once(kernel: ModuleType, mission: Mission, seed: int, run: int) -> tuple
     return time.perf_counter() - start, out
 
 
+def case_mission(case: str, reading: str) -> Mission:
+    """The mission of a ``planner:drones[:rc[:sigma]]`` case under a named reading."""
+    planner, drones, *rest = case.split(":")
+    return Mission.build(reading=reading, planner=planner, drones=int(drones),
+                         rc=float(rest[0]) if rest else 1000.0,
+                         sigma=float(rest[1]) if len(rest) > 1 else 0.0)
+
+
 def measure(old_source: str, case: str, runs: int, rounds: int, new_first: bool,
             reading: str) -> None:
     """Print ``identical speed-up`` for one case, with the kernels compiled in one order."""
-    planner, drones, *rest = case.split(":")
-    mission = Mission.build(reading=reading, planner=planner, drones=int(drones),
-                            rc=float(rest[0]) if rest else 1000.0,
-                            sigma=float(rest[1]) if len(rest) > 1 else 0.0)
+    mission = case_mission(case, reading)
     with tempfile.TemporaryDirectory() as tmp:
         sources = {"old": old_source, "new": (ROOT / KERNEL).read_text()}
         kernels = {tag: load_kernel(sources[tag], f"kernel_{tag}", Path(tmp))

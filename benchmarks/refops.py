@@ -46,16 +46,13 @@ for (loc, ret), c in hits.most_common():
 """
 
 
-def serve(case: str, run: int) -> None:
+def serve(case: str, run: int, reading: str) -> None:
     """Compile the kernel, print its addresses, stop until gdb attaches, then do one run."""
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    from bench_paired import load_kernel, run_once
-    from sarlink import Mission, prepare
+    from bench_paired import case_mission, load_kernel, run_once
+    from sarlink import prepare
 
-    planner, drones, *rest = case.split(":")
-    mission = Mission.build(planner=planner, drones=int(drones),
-                            rc=float(rest[0]) if rest else 1000.0,
-                            sigma=float(rest[1]) if len(rest) > 1 else 0.0)
+    mission = case_mission(case, reading)
     with tempfile.TemporaryDirectory() as tmp:
         kernel = load_kernel((ROOT / "src/sarlink/engine/kernel.py").read_text(), "kernel_refops",
                              Path(tmp))
@@ -75,13 +72,15 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("case", help="planner:drones[:rc[:sigma]]")
     parser.add_argument("--run", type=int, default=3, help="run index (seed 1)")
+    parser.add_argument("--reading", default="sarlink-1", help="the reading of the paper to fly")
     parser.add_argument("--serve", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.serve:
-        serve(args.case, args.run)
+        serve(args.case, args.run, args.reading)
         return
     child = subprocess.Popen([sys.executable, __file__, args.case, "--run", str(args.run),
-                              "--serve"], stdout=subprocess.PIPE, text=True)
+                              "--reading", args.reading, "--serve"], stdout=subprocess.PIPE,
+                             text=True)
     assert child.stdout is not None
     inc, dec, base, n_steps = (int(v) for v in child.stdout.readline().split())
     with tempfile.NamedTemporaryFile("w", suffix=".py") as script:
