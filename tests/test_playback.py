@@ -25,8 +25,9 @@ runner = CliRunner()
 
 @pytest.fixture(scope="module")
 def shadowed():
-    """ConB with shadowing: detected at 3337 s, the BS told 35 s later, then drones return."""
-    mission = Mission.build(planner="conb", drones=10, rc=500.0, sigma=3.0)
+    """ConB with shadowing (reading sarlink-1): detected at 3337 s, the BS told 35 s later,
+    then drones return."""
+    mission = Mission.build(reading="sarlink-1", planner="conb", drones=10, rc=500.0, sigma=3.0)
     return simulate(mission, seed=3, run=2, trajectory=True), mission
 
 

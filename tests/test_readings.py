@@ -57,8 +57,9 @@ def test_contacts_all_follows_the_longest_contact_even_without_a_route() -> None
     (``all``) it keeps on with drone 2, nearly east."""
     positions = [(3885.0, 2000.0), (2910.0, 2000.0), (3885.0, 2600.0)]
     angles = [0.0, math.pi, 0.0]
-    routed = _headings("conb", positions, angles, rc=1000.0, contacts="routed")
-    every = _headings("conb", positions, angles, rc=1000.0, contacts="all")
+    routed = _headings("conb", positions, angles, rc=1000.0, conb_check="period",
+                       contacts="routed")
+    every = _headings("conb", positions, angles, rc=1000.0, conb_check="period", contacts="all")
     assert routed[3, 0] == pytest.approx((-1.0, 0.0))
     # towards where drone 2 will be at T_max, from drone 0's next position, plus the heading
     cx, cy = 3895.0 + 5.0 * 4000.0, 2600.0
@@ -72,8 +73,8 @@ def test_an_isolated_drone_keeps_its_heading_or_turns_home() -> None:
     """A lone ConB drone 1500 m east of the BS (r_c = 500 m) flies north with no neighbour:
     at its update (step 2) it keeps its heading, or turns to the BS with ``isolated = home``."""
     args = ("conb", [(3500.0, 2000.0)], [math.pi / 2])
-    keep = _headings(*args, rc=500.0, isolated="keep")
-    home = _headings(*args, rc=500.0, isolated="home")
+    keep = _headings(*args, rc=500.0, conb_check="period", isolated="keep")
+    home = _headings(*args, rc=500.0, conb_check="period", isolated="home")
     assert keep[3, 0] == pytest.approx((0.0, 1.0))
     x, y = 3500.0, 2000.0 + 2 * 5.0  # where it is at step 2
     d = math.hypot(2000.0 - x, 2000.0 - y)
@@ -151,7 +152,7 @@ def test_the_variants_change_one_choice_to_each_other_value() -> None:
 def study(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
     """Fig. 7 (its sweeps stop early: seconds) with the sensitivity analysis, 3 runs a point."""
     return reproduce(tmp_path_factory.mktemp("sensitivity"), runs=3, figures=[7],
-                     progress=False, workers=1, sensitivity_analysis=True)
+                     progress=False, workers=1, reading="sarlink-1", sensitivity_analysis=True)
 
 
 def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult) -> None:

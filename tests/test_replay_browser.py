@@ -27,8 +27,9 @@ def browser():
 
 @pytest.fixture(scope="module")
 def single(tmp_path_factory) -> tuple[Replay, Path]:
-    """ConB with shadowing: detected at 3337 s, notified at 3372 s, then the team returns."""
-    mission = Mission.build(planner="conb", drones=10, rc=500.0, sigma=3.0)
+    """ConB with shadowing (reading sarlink-1): detected at 3337 s, notified at 3372 s, then
+    the team returns."""
+    mission = Mission.build(reading="sarlink-1", planner="conb", drones=10, rc=500.0, sigma=3.0)
     page = replay(simulate(mission, seed=3, run=2, trajectory=True), mission)
     return page, page.write(tmp_path_factory.mktemp("replay") / "mission.html")
 
