@@ -132,7 +132,7 @@ class Readings(Checked):
     """
 
     conb_check: Literal["period", "continuous"] = Field(
-        "period",
+        "continuous",
         description="ConB's connectivity check (Section 3.2): period: at the end of each "
         "sensing period, for the graph at t + t_s; continuous: every step, for the graph at "
         "every increment up to t + t_s, turning at once if a loss of the route is predicted",
@@ -148,7 +148,7 @@ class Readings(Checked):
         "heading, or turn towards the BS",
     )
     concov_fallback: Literal["heading", "connectivity"] = Field(
-        "heading",
+        "connectivity",
         description="ConCov's heading when Eq. 12's two unit terms cancel: keep the heading, "
         "or follow the connectivity term",
     )

@@ -76,7 +76,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
 )}
 """The presets by name."""
 
-DEFAULT_READING = "sarlink-1"
+DEFAULT_READING = "sarlink-2"
 """The reading ``Mission()`` gives and ``sarlink reproduce`` uses unless told otherwise."""
 
 
