@@ -174,7 +174,9 @@ def flips(findings: list[Finding], done: list[Variant]) -> list[str]:
     for v in done:
         for before, after in zip(findings, v.findings, strict=True):
             if after.outcome is not before.outcome:
-                part = (after.against or after.parts)[0]
+                moved = [a for a, b in zip(after.parts, before.parts, strict=False)
+                         if a.outcome is not b.outcome]  # the parts that changed, if aligned
+                part = (moved or after.against or after.parts)[0]
                 out.append(f"{v.name}: {after.figure} \"{after.claim}\" {before.outcome.value}"
                            f" → {after.outcome.value} ({part.text})")
     return out
