@@ -70,10 +70,14 @@ def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[
     one sweep of every planner's runs they need (a folder shared by readings is swept once),
     and how long it took."""
     t0 = time.perf_counter()
-    wanted = [{exp.name: [folder for folder, _ in _planner_sweeps(exp, runs, choices)]
-               for exp in experiments} for choices in readings]
-    jobs = {folder: experiment for choices in readings for exp in experiments
-            for folder, experiment in _planner_sweeps(exp, runs, choices)}
+    jobs: dict[Path, Experiment] = {}
+    wanted: list[dict[str, list[Path]]] = []
+    for choices in readings:
+        wanted.append({})
+        for exp in experiments:
+            sweeps = dict(_planner_sweeps(exp, runs, choices))
+            wanted[-1][exp.name] = list(sweeps)
+            jobs.update(sweeps)
     resumed = sum((runs_folder / folder / "experiment.json").exists() for folder in jobs)
     frames = dict(zip(jobs, sweep_all([(e, runs_folder / f) for f, e in jobs.items()],
                                       workers=workers, scheduler=scheduler, progress=progress),
