@@ -1,80 +1,98 @@
-"""Paired timing of the kernel against the kernel of another git revision, on the same runs.
+"""Paired timing of the engine against the engine of another git revision, on the same runs.
 
-The host's speed drifts by tens of percent within an hour, so timings of two kernel versions
-taken minutes apart cannot show a 10 % change. This script compiles both kernels side by side
-(the working tree's and ``git show REV:src/sarlink/engine/kernel.py``, both without the disk
-cache), runs every run with both back to back in alternating order, and reports the median of
-the paired time ratios. It also counts the runs whose results are identical, bit for bit.
+The host's speed drifts by tens of percent within an hour, so timings of two engine versions
+taken minutes apart cannot show a 10 % change. This script loads the git revision's whole
+package beside the working tree's (``git archive REV src/sarlink``, renamed ``sarlink_rev``,
+compiled without the disk cache), runs every run with both kernels back to back in
+alternating order, and reports the median of the paired time ratios. It also counts the runs
+whose results are identical, bit for bit.
 
 The kernel compiled first in a process runs faster, by 10-40 % for identical code (where the
 machine code lands in memory matters), so each case is measured in two processes, one per
 compile order, and the speed-up is the geometric mean of their two medians. Run with
 
-    python benchmarks/bench_paired.py fff07f0 --cases covb:22,conb:22 --runs 10 --rounds 6
+    python benchmarks/bench_paired.py 5c5ff3d --cases covb:22,conb:22 --runs 10 --rounds 6
 
-Both kernels must take the same arguments; the ``Params`` fields are matched by name, and
-the results are compared in a common form (the 8-tuple of kernels before the split into
-phases and the :class:`~sarlink.engine.records.RunRecord` since).
+``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
+as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
+Both revisions must have ``Prepared.record(streams, scenario, trajectory=...)``.
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib.util
+import importlib
+import io
 import math
+import re
 import subprocess
 import sys
+import tarfile
 import tempfile
 import time
 from pathlib import Path
 from types import ModuleType
+from typing import Any
 
 import numpy as np
 
 from sarlink import Mission, prepare
-from sarlink.engine.scenario import draw_scenario, takeoff_headings
+from sarlink.engine.build import kernel_for
+from sarlink.engine.radios import get_radio
+from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import run_streams
 
 ROOT = Path(__file__).resolve().parents[1]
-KERNEL = "src/sarlink/engine/kernel.py"
+_NAME = re.compile(r"\bsarlink\b(?=[.\s,)])")
 
 
-def load_kernel(source: str, name: str, folder: Path) -> ModuleType:
-    """The kernel module compiled from ``source``, with Numba's disk cache off."""
-    path = folder / f"{name}.py"
-    path.write_text(source.replace("cache=True", "cache=False"))
-    spec = importlib.util.spec_from_file_location(name, path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+def load_revision(rev: str, folder: Path) -> ModuleType:
+    """The package ``sarlink`` of git revision ``rev`` as ``sarlink_rev``, without disk cache."""
+    tar = subprocess.run(["git", "archive", rev, "src/sarlink"], cwd=ROOT, check=True,
+                         capture_output=True).stdout
+    with tarfile.open(fileobj=io.BytesIO(tar)) as archive:
+        archive.extractall(folder, filter="data")
+    package = folder / "src" / "sarlink"
+    for path in package.rglob("*.py"):
+        text = _NAME.sub("sarlink_rev", path.read_text()).replace("cache=True", "cache=False")
+        path.write_text(text)
+    package.rename(folder / "sarlink_rev")
+    sys.path.insert(0, str(folder))
+    return importlib.import_module("sarlink_rev")
 
 
-def outcome(out: tuple) -> list[np.ndarray]:
-    """A kernel's result as a list of arrays: events, records, trajectory."""
-    if hasattr(out, "track"):  # a RunRecord
-        events = np.array([out.t_detect, out.t_notify, float(out.detector),
-                           1.0 if out.immediate else 0.0])
-        tr = out.track
-        return [events, out.reach_cum, out.conn_cum, tr.positions, tr.headings, tr.knows,
-                tr.bs_route, tr.mode]
-    return [np.asarray(a) for a in out[:8]]
+class Side:
+    """One engine to time: flies run ``r`` of a case and returns (seconds, record).
+
+    ``kernel_of`` picks the kernel for a prepared mission; ``None`` calls the revision's own
+    ``record()``, whose kernel is compiled without disk cache.
+    """
+
+    def __init__(self, mission_of: Any, prepare_of: Any, kernel_of: Any = None) -> None:
+        self.mission_of, self.prepare_of, self.kernel_of = mission_of, prepare_of, kernel_of
+
+    def run_once(self, case: str, reading: str, seed: int, run: int) -> tuple[float, Any]:
+        prepared = self.prepare_of(self.mission_of(case, reading))
+        streams = run_streams(seed, run)
+        scenario = draw_scenario(prepared.mission, streams.scenario)
+        if self.kernel_of is None:
+            start = time.perf_counter()
+            out = prepared.record(streams, scenario, trajectory=True)
+        else:
+            kernel = self.kernel_of(prepared)
+            args = prepared.arguments(streams, scenario, trajectory=True)
+            start = time.perf_counter()
+            out = kernel(*args)
+        return time.perf_counter() - start, out
 
 
-def run_once(kernel: ModuleType, mission: Mission, seed: int, run: int) -> tuple[float, tuple]:
-    """Wall seconds of one kernel call and its result, from fresh random streams."""
-    prepared = prepare(mission)
-    streams = run_streams(seed, run)
-    scenario = draw_scenario(mission, streams.scenario)
-    pos0 = np.tile(np.asarray(mission.area.bs_xy, dtype=float), (mission.team.drones, 1))
-    params = kernel.Params(**{f: getattr(prepared.params, f) for f in kernel.Params._fields})
-    args = (params, float(scenario.target[0]),
-            float(scenario.target[1]), pos0, takeoff_headings(scenario, prepared.distributed),
-            prepared.waypoints, prepared.wp_start, prepared.cp_steps, streams.turn,
-            streams.shadow, streams.look)
-    start = time.perf_counter()
-    out = kernel.simulate_kernel(*args)
-    return time.perf_counter() - start, out
+def outcome(out: Any) -> list[np.ndarray]:
+    """A run record as a list of arrays: events, records, trajectory."""
+    events = np.array([out.t_detect, out.t_notify, float(out.detector),
+                       1.0 if out.immediate else 0.0])
+    tr = out.track
+    return [events, out.reach_cum, out.conn_cum, tr.positions, tr.headings, tr.knows,
+            tr.bs_route, tr.mode]
 
 
 def case_mission(case: str, reading: str) -> Mission:
@@ -85,32 +103,58 @@ def case_mission(case: str, reading: str) -> Mission:
                          sigma=float(rest[1]) if len(rest) > 1 else 0.0)
 
 
-def measure(old_source: str, case: str, runs: int, rounds: int, new_first: bool,
-            reading: str) -> None:
+def uncached(rule: Any) -> Any:
+    """A kernel picker: ``rule`` (or the mission's own), compiled without disk cache."""
+    def kernel_of(prepared: Any) -> Any:
+        chosen = prepared.steering.rule if rule is None else rule
+        return kernel_for(chosen, get_radio(prepared.mission.radio), cache=False)
+    return kernel_of
+
+
+def sides(rev: str, folder: Path) -> dict[str, Side]:
+    """The two engines: ``old`` (revision ``rev``; with ``rev = plugin`` the built-in CovB)
+    and ``new`` (the working tree; with ``plugin`` CovB written as a plug-in)."""
+    if rev == "plugin":
+        sys.path.insert(0, str(ROOT / "tests" / "plugins"))
+        from covb_again import COVB_AGAIN  # type: ignore[import-not-found]
+
+        return {"old": Side(case_mission, prepare, uncached(None)),
+                "new": Side(case_mission, prepare, uncached(COVB_AGAIN))}
+    old = load_revision(rev, folder)
+
+    def old_mission(case: str, reading: str) -> Any:
+        data = case_mission(case, reading).model_dump(exclude={"channel": {"radio"}})
+        return old.Mission(**data)
+
+    return {"old": Side(old_mission, old.prepare), "new": Side(case_mission, prepare,
+                                                               uncached(None))}
+
+
+def measure(rev: str, case: str, runs: int, rounds: int, new_first: bool, reading: str) -> None:
     """Print ``identical speed-up`` for one case, with the kernels compiled in one order."""
-    mission = case_mission(case, reading)
     with tempfile.TemporaryDirectory() as tmp:
-        sources = {"old": old_source, "new": (ROOT / KERNEL).read_text()}
-        kernels = {tag: load_kernel(sources[tag], f"kernel_{tag}", Path(tmp))
-                   for tag in (("new", "old") if new_first else ("old", "new"))}
-        for tag in kernels:  # compile in that order
-            run_once(kernels[tag], mission, 1, 0)
+        both = sides(rev, Path(tmp))
+        order = ("new", "old") if new_first else ("old", "new")
+        for tag in order:  # compile in that order
+            both[tag].run_once(case, reading, 1, 0)
         same = sum(all(np.array_equal(a, b, equal_nan=a.dtype.kind == "f") for a, b in
-                       zip(outcome(run_once(kernels["old"], mission, 1, r)[1]),
-                           outcome(run_once(kernels["new"], mission, 1, r)[1]), strict=True))
+                       zip(outcome(both["old"].run_once(case, reading, 1, r)[1]),
+                           outcome(both["new"].run_once(case, reading, 1, r)[1]),
+                           strict=True))
                    for r in range(runs))
         ratios = []
         for rnd in range(rounds):
             for r in range(runs):
-                order = ["old", "new"][:: 1 if (rnd + r) % 2 == 0 else -1]
-                pair = {tag: run_once(kernels[tag], mission, 1, r)[0] for tag in order}
+                pair_order = ["old", "new"][:: 1 if (rnd + r) % 2 == 0 else -1]
+                pair = {tag: both[tag].run_once(case, reading, 1, r)[0] for tag in pair_order}
                 ratios.append(pair["old"] / pair["new"])
     print(same, np.median(ratios))
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("rev", help="git revision of the kernel to compare with")
+    parser.add_argument("rev", help="git revision of the engine to compare with, or 'plugin' "
+                                    "(built-in CovB against CovB as a plug-in)")
     parser.add_argument("--cases", default="covb:22,conb:22",
                         help="planner:drones[:rc[:sigma]] items, comma-separated")
     parser.add_argument("--runs", type=int, default=10)
@@ -120,10 +164,8 @@ def main() -> None:
                              "of kernels before readings were selectable)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
-    old_source = subprocess.run(["git", "show", f"{args.rev}:{KERNEL}"], cwd=ROOT, check=True,
-                                capture_output=True, text=True).stdout
     if args.one:  # one compile order, in a process of its own
-        measure(old_source, args.cases, args.runs, args.rounds, args.one == "new-first",
+        measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
                 args.reading)
         return
     for case in args.cases.split(","):

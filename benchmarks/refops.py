@@ -49,23 +49,23 @@ for (loc, ret), c in hits.most_common():
 def serve(case: str, run: int, reading: str) -> None:
     """Compile the kernel, print its addresses, stop until gdb attaches, then do one run."""
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    from bench_paired import case_mission, load_kernel, run_once
+    from bench_paired import Side, case_mission, uncached
+
     from sarlink import prepare
 
+    side = Side(case_mission, prepare, uncached(None))
+    side.run_once(case, reading, 1, run)  # compile
     mission = case_mission(case, reading)
-    with tempfile.TemporaryDirectory() as tmp:
-        kernel = load_kernel((ROOT / "src/sarlink/engine/kernel.py").read_text(), "kernel_refops",
-                             Path(tmp))
-        run_once(kernel, mission, 1, run)  # compile
-        sig = kernel.simulate_kernel.signatures[0]
-        library = kernel.simulate_kernel.overloads[sig].library
-        engine = library._codegen._engine
-        name = kernel.simulate_kernel.overloads[sig].fndesc.mangled_name
-        addresses = [engine.get_function_address(s) for s in ("NRT_incref", "NRT_decref")]
-        print(*addresses, engine.get_function_address(name), prepare(mission).params.n_steps,
-              flush=True)
-        os.kill(os.getpid(), signal.SIGSTOP)  # gdb attaches here
-        run_once(kernel, mission, 1, run)
+    kernel = uncached(None)(prepare(mission))
+    sig = kernel.signatures[0]
+    library = kernel.overloads[sig].library
+    engine = library._codegen._engine
+    name = kernel.overloads[sig].fndesc.mangled_name
+    addresses = [engine.get_function_address(s) for s in ("NRT_incref", "NRT_decref")]
+    print(*addresses, engine.get_function_address(name), prepare(mission).params.n_steps,
+          flush=True)
+    os.kill(os.getpid(), signal.SIGSTOP)  # gdb attaches here
+    side.run_once(case, reading, 1, run)
 
 
 def main() -> None:
@@ -78,7 +78,7 @@ def main() -> None:
     if args.serve:
         serve(args.case, args.run, args.reading)
         return
-    child = subprocess.Popen([sys.executable, __file__, args.case, "--run", str(args.run),
+    child = subprocess.Popen([sys.executable, sys.argv[0], args.case, "--run", str(args.run),
                               "--reading", args.reading, "--serve"], stdout=subprocess.PIPE,
                              text=True)
     assert child.stdout is not None

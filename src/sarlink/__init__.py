@@ -14,8 +14,22 @@ from sarlink.config import (
     Team,
     Timing,
 )
-from sarlink.engine import Scenario
-from sarlink.planners import get_planner, planner_names
+from sarlink.engine import (
+    DistributedRule,
+    Observation,
+    Params,
+    RadioModel,
+    Scenario,
+    radio_names,
+    register_radio,
+)
+from sarlink.planners import (
+    RoutePlanner,
+    RulePlanner,
+    get_planner,
+    planner_names,
+    register_planner,
+)
 from sarlink.playback import Replay, replay
 from sarlink.result import RunResult, Trajectory
 from sarlink.simulation import prepare, simulate
@@ -42,10 +56,16 @@ __all__ = [
     "Area",
     "Channel",
     "ConfigError",
+    "DistributedRule",
     "Experiment",
     "Mission",
     "MtspSettings",
+    "Observation",
+    "Params",
+    "RadioModel",
     "Replay",
+    "RoutePlanner",
+    "RulePlanner",
     "RunResult",
     "Scenario",
     "Sensing",
@@ -57,6 +77,9 @@ __all__ = [
     "load",
     "planner_names",
     "prepare",
+    "radio_names",
+    "register_planner",
+    "register_radio",
     "replay",
     "simulate",
     "sweep",

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any, Self
 
 from pydantic import Field, field_validator, model_validator
+from pydantic_core import to_json
 
 from sarlink.config.base import Checked, ConfigError, read_toml
 from sarlink.config.mission import Mission, param_groups
@@ -32,9 +33,19 @@ MAX_RUNS = 1_000_000_000
 takes a millisecond)."""
 
 
+ADDED_LATER: dict[str, dict[str, Any]] = {"channel": {"radio": None}}
+"""Parameters added after results were first stored, with the value that keeps the earlier
+behaviour: left out of the hash at that value, so earlier results folders stay valid."""
+
+
 def mission_hash(mission: Mission) -> str:
     """A short content hash of every parameter of ``mission``: the name of its results folder."""
-    return hashlib.sha256(mission.model_dump_json().encode()).hexdigest()[:16]
+    data = mission.model_dump(mode="json")
+    for group, fields in ADDED_LATER.items():
+        for name, value in fields.items():
+            if data[group].get(name, value) == value:
+                data[group].pop(name, None)
+    return hashlib.sha256(to_json(data)).hexdigest()[:16]  # the bytes of model_dump_json
 
 
 def _label(params: dict[str, Any]) -> str:

@@ -53,7 +53,8 @@ class Team(Checked):
 
     drones: int = Field(10, ge=1, le=1000, strict=True, description="number of drones N_m")
     speed: float = Field(5.0, gt=0, description="flight speed V_m, m/s")
-    planner: str = Field("covb", description="planner name, see sarlink.planner_names()")
+    planner: str = Field("covb", min_length=1, description="planner name, see sarlink.planner_names() "
+                         "(checked where a mission becomes work: sarlink.prepare)")
     alpha: float = Field(0.5, ge=0, le=1, description="ConCov weight of coverage (Eq. 12)")
     nr: int = Field(6, ge=1, strict=True,
                     description="mTSP-ConB: drones reserved for the mTSP plan")
@@ -70,15 +71,6 @@ class Team(Checked):
         "target's location, or only the first detector",
     )
 
-    @field_validator("planner")
-    @classmethod
-    def _known_planner(cls, name: str) -> str:
-        from sarlink.planners import planner_names
-
-        names = planner_names()
-        if name not in names:
-            raise ValueError(f"planner must be one of {', '.join(names)}")
-        return name
 
 
 class Sensing(Checked):
@@ -94,8 +86,14 @@ class Sensing(Checked):
 
 
 class Channel(Checked):
-    """Radio links: disc model (Eq. 4), optionally with log-normal shadowing (Eq. 13)."""
+    """Radio links: disc model (Eq. 4), optionally with log-normal shadowing (Eq. 13), or a
+    radio model of a plug-in (docs/plugins.md)."""
 
+    radio: str | None = Field(
+        None, min_length=1,
+        description="radio model by name (sarlink.engine.radios.radio_names()); None: the "
+        "paper's, disc if sigma = 0, else log-normal shadowing",
+    )
     rc: float = Field(1000.0, gt=0, description="communication range r_c, m")
     sigma: float = Field(0.0, ge=0, le=30, description="shadowing standard deviation, dB")
     pathloss_exponent: float = Field(1.75, gt=0, description="path-loss exponent n")
@@ -286,6 +284,12 @@ class Mission(Checked):
     def steps(self, seconds: float) -> int:
         """A duration in whole time increments (durations are validated as multiples of dt)."""
         return max(1, round(seconds / self.timing.dt))
+
+    @property
+    def radio(self) -> str:
+        """The radio model's name, resolving the paper's default."""
+        c = self.channel
+        return c.radio or ("shadowing" if c.sigma > 0 else "disc")
 
     @property
     def coherence(self) -> float:

@@ -1,11 +1,17 @@
 """The simulation engine: Numba kernels in the model's phases and their Python wrapper.
 
 It takes a mission and a :class:`Steering` (rule and routes); the planners that make
-steerings live above it (:mod:`sarlink.planners`, :mod:`sarlink.simulation`).
+steerings live above it (:mod:`sarlink.planners`, :mod:`sarlink.simulation`). Its plug-in
+seams are :class:`DistributedRule` and :class:`RadioModel` (docs/plugins.md).
 """
 
+from sarlink.engine.hooks import DistributedRule, RadioModel
+from sarlink.engine.observation import Observation
+from sarlink.engine.params import Params
+from sarlink.engine.radios import get_radio, radio_names, register_radio
 from sarlink.engine.run import Prepared
 from sarlink.engine.scenario import Scenario
 from sarlink.engine.steering import Steering
 
-__all__ = ["Prepared", "Scenario", "Steering"]
+__all__ = ["DistributedRule", "Observation", "Params", "Prepared", "RadioModel", "Scenario",
+           "Steering", "get_radio", "radio_names", "register_radio"]

@@ -3,15 +3,6 @@
 from enum import IntEnum
 
 
-class Rule(IntEnum):
-    """The direction-update rule that a team's distributed drones run."""
-
-    COVB = 0
-    CONB = 1
-    CONCOV = 2
-    NONE = 3  # no distributed drone: every drone flies a route (mTSP)
-
-
 class Mode(IntEnum):
     """What a drone is doing."""
 

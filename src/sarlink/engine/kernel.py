@@ -8,9 +8,10 @@ Each step at ``t = k dt`` observes (sense, links, flooding, records), decides (w
 or updates, the team's rule, the boundary rule) and moves. Node indices: drones ``0 .. N-1``,
 the BS ``N``, the target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
 
-Numba caches this function's machine code keyed on this file alone, so a change to any other
-engine module must also change :data:`SOURCE_DIGEST` (``python -m sarlink.engine.fingerprint``
-prints it; a test checks it), which recompiles the kernel instead of running stale code.
+This file is a template: :mod:`sarlink.engine.build` compiles it once per pair of distributed
+rule and radio model (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
+below, into a module of its own in the cache folder, named after the digest of every source it
+depends on (so an edit anywhere recompiles, and every process shares the compiled code).
 """
 
 from __future__ import annotations
@@ -20,11 +21,10 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import graph, motion, radio, records, rules, sensing
+from sarlink.engine import graph, motion, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
+from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
-    CONTINUOUS,
-    LANDED,
     REPORT,
     SEARCHING,
     STOP_DETECTED,
@@ -33,16 +33,26 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
-SOURCE_DIGEST = "7d2e840db65c3bd2"
-"""Digest of the engine's other sources (:mod:`sarlink.engine.fingerprint`)."""
+# ---- plug-ins: this block is replaced per rule and radio model (sarlink.engine.build) ----
+from sarlink.engine.radios.disc import init as radio_init
+from sarlink.engine.radios.disc import nominal as radio_nominal
+from sarlink.engine.radios.disc import update as radio_update
+from sarlink.engine.rules.none import decide as rule_decide
+from sarlink.engine.rules.none import due as rule_due
+from sarlink.engine.rules.none import prepare as rule_prepare
+
+RULE_DUE = False
+RULE_NEAR = False
+RADIO_STATIC = True
+# ---- end of plug-ins ----
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarray,
-                    heading0: np.ndarray, wp: np.ndarray, wp_start: np.ndarray,
+def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
+                    pos0: np.ndarray, heading0: np.ndarray, wp: np.ndarray, wp_start: np.ndarray,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator) -> RunRecord:
-    """Simulate one run.
+    """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
     ``cp_steps`` are the steps at which the cumulative records are taken. A run stopped early
@@ -69,22 +79,19 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
             hx[i], hy[i] = unit(wp[k, 0] - px[i], wp[k, 1] - py[i], hx[i], hy[i])
     last_change, pass_start = np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
     knows, in_range = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
-    disc2 = radio.disc_ranges(p, m, mp)
-    thr2 = disc2.copy() if p.sigma > 0.0 else disc2
+    thr2 = radio_init(p, rp, m, mp)
     nw = (m + 63) // 64
     adj, near = np.zeros((m, nw), dtype=np.uint64), np.zeros((m, nw), dtype=np.uint64)
-    flying = np.zeros(nw, dtype=np.uint64)  # drones not landed: they exert CovB's push
     routed = np.zeros(nw, dtype=np.uint64)  # nodes with a route to the BS
     spread = np.zeros(nw, dtype=np.uint64)  # nodes that know the target's location
-    routed_next = np.zeros(nw, dtype=np.uint64)  # ConB's prediction of routed at t + t_s
-    routed_step = np.zeros(nw, dtype=np.uint64)  # the same at one increment (continuous check)
     stack = np.empty(m, dtype=np.int64)
-    qx, qy = np.full(mp, FAR), np.full(mp, FAR)  # ConB's predicted positions
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
-    con_x, con_y = np.zeros(n), np.zeros(n)  # ConB's directions of the deciding drones
     deciding = np.zeros(n, dtype=np.bool_)
     leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
+    obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
+                      spread, radio_nominal(p, rp))
+    ws = rule_prepare(p, obs)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
@@ -92,28 +99,24 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
     ci = 0
     t_det = t_not = NEVER
     detector = -1
-    covb, conb = rules.uses_covb(p), rules.uses_conb(p)
-    continuous = conb and p.conb_check == CONTINUOUS
     routes = wp.shape[0] > 0
-    may_settle = not (p.record or p.sigma > 0.0)  # a recorded run keeps every step
+    may_settle = RADIO_STATIC and not p.record  # a recorded run keeps every step
     home_max = motion.farthest_home(p)
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
         ci = records.take_checkpoints(k, cp_steps, ci, reach_cum, conn_cum, acc_reach, acc_conn)
         # ---- observe: sense, link, flood, notify, account ----
-        radio.update_channel(thr2, p, k, rng_shadow)
+        radio_update(thr2, p, rp, k, rng_shadow)
         first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
         if t_det < 0.0 and first >= 0:
             t_det, detector = t, first
-        push = continuous  # a drone may decide at any step: CovB's neighbours every step
-        if covb:
-            flying[:] = 0
+        push = False  # the pairs within r, on the steps at which a drone may decide
+        if RULE_NEAR:
+            push = RULE_DUE  # a due hook may make a drone decide at any step
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
-                if mode[i] != LANDED:
-                    graph.add(flying, i)
         graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         graph.bs_component(adj, n, routed, stack)
         if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
@@ -144,18 +147,11 @@ def simulate_kernel(p: Params, target_x: float, target_y: float, pos0: np.ndarra
                           leave_y, rejoin, last_change)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
-        if continuous:
-            any_deciding = rules.check_continuously(k, px, py, hx, hy, mode, on_route, pz, p, qx,
-                                                    qy, disc2, routed_next, routed_step, stack,
-                                                    deciding, last_change)
-        elif conb and any_deciding:
-            rules.predict_routes(px, py, hx, hy, mode, pz, p, p.ts_steps, qx, qy, disc2,
-                                 routed_next, stack)
-        if conb and any_deciding:
-            rules.conb_headings(deciding, px, py, hx, hy, mode, adj, routed_next, p, con_x,
-                                con_y)
-        rules.steer(k, p, deciding, px, py, hx, hy, mode, on_route, last_change, near, flying,
-                    con_x, con_y, nhx, nhy, rng_turn)
+        if RULE_DUE:
+            any_deciding = rule_due(k, p, obs, ws, deciding)
+        if any_deciding:
+            rule_decide(k, p, obs, ws, deciding, nhx, nhy)
+        motion.boundary(k, p, px, py, mode, on_route, last_change, nhx, nhy, rng_turn)
         hx[:] = nhx
         hy[:] = nhy
         # ---- move ----

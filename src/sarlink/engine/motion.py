@@ -139,6 +139,22 @@ def boundary_turn(
             return hx, hy, True
 
 
+@njit(cache=True, error_model="numpy")
+def boundary(k: int, p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
+             on_route: np.ndarray, last_change: np.ndarray, nhx: np.ndarray, nhy: np.ndarray,
+             rng: np.random.Generator) -> None:
+    """The boundary rule for every searching distributed drone after the rule has decided
+    (:func:`boundary_turn`); a turn counts as a direction change. One pass, in drone order,
+    so the random draws do not depend on the rule."""
+    step = p.speed * p.dt
+    for i in range(nhx.shape[0]):
+        if on_route[i] or mode[i] != SEARCHING:  # flying a route, home or landed
+            continue
+        nhx[i], nhy[i], turned = boundary_turn(px[i], py[i], nhx[i], nhy[i], step, p.size, rng)
+        if turned:
+            last_change[i] = k
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def fly_route(
     i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,

@@ -14,7 +14,6 @@ from sarlink.engine.codes import (
     Mode,
     OnDetect,
     Reporters,
-    Rule,
     Stop,
 )
 
@@ -24,9 +23,6 @@ LANDED = int(Mode.LANDED)
 REPORTING = int(Mode.REPORTING)
 REPORT = int(OnDetect.REPORT)
 DETECTOR_ONLY = int(Reporters.DETECTOR)
-COVB = int(Rule.COVB)
-CONB = int(Rule.CONB)
-CONCOV = int(Rule.CONCOV)
 PER_PERIOD = int(Look.PER_PERIOD)
 STOP_DETECTED = int(Stop.DETECTED)
 STOP_NOTIFIED = int(Stop.NOTIFIED)
@@ -44,7 +40,6 @@ class Params(NamedTuple):
     bs_x: float
     bs_y: float
     speed: float
-    rule: int
     alpha: float
     flight_time: float
     r: float

@@ -3,11 +3,14 @@ kernel's record into a :class:`~sarlink.RunResult`."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+from numba.core.errors import NumbaError
 
-from sarlink.config import Mission
+from sarlink.config import ConfigError, Mission
+from sarlink.engine.build import kernel_for
 from sarlink.engine.codes import (
     CHECK_CODES,
     CONNECTED_CODES,
@@ -19,8 +22,8 @@ from sarlink.engine.codes import (
     REPORTERS_CODES,
     STOP_CODES,
 )
-from sarlink.engine.kernel import simulate_kernel
 from sarlink.engine.params import Params
+from sarlink.engine.radios import get_radio
 from sarlink.engine.records import RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
@@ -33,7 +36,9 @@ class Prepared:
     """A mission and its steering turned into kernel inputs once, to run many times."""
 
     mission: Mission
+    steering: Steering
     params: Params
+    radio_params: np.ndarray
     distributed: np.ndarray
     waypoints: np.ndarray
     wp_start: np.ndarray
@@ -43,6 +48,11 @@ class Prepared:
     def build(cls, mission: Mission, steering: Steering) -> Prepared:
         """Kernel inputs for ``mission`` flown with ``steering``: scalars, routes, checkpoints."""
         n = mission.team.drones
+        distributed = steering.distributed(n)
+        if steering.rule is None and distributed.any():
+            raise ConfigError(f"team.planner {mission.team.planner!r} gave no route to drone "
+                              f"{int(np.argmax(distributed))} and has no distributed rule")
+        radio = get_radio(mission.radio)
         routes = list(steering.routes) + [np.empty((0, 2))] * (n - len(steering.routes))
         wp_start = np.zeros(n + 1, dtype=np.int64)
         wp_start[1:] = np.cumsum([len(r) for r in routes])
@@ -52,7 +62,7 @@ class Prepared:
         cp_steps = np.array(mission.checkpoint_steps(), dtype=np.int64)
         params = Params(
             size=mission.area.size, bs_x=bs_x, bs_y=bs_y, speed=mission.team.speed,
-            rule=int(steering.rule), alpha=float(steering.alpha),
+            alpha=mission.team.alpha,
             flight_time=mission.team.flight_time, r=mission.sensing.r,
             p_miss=mission.sensing.p_miss, look=int(LOOK_CODES[mission.sensing.look]),
             rc=mission.channel.rc, sigma=mission.channel.sigma,
@@ -67,23 +77,46 @@ class Prepared:
             concov_fallback=int(FALLBACK_CODES[r.concov_fallback]),
             concov_connected=int(CONNECTED_CODES[r.concov_connected]),
         )
-        return cls(mission=mission, params=params, distributed=steering.distributed(n),
-                   waypoints=waypoints, wp_start=wp_start, cp_steps=cp_steps)
+        rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
+        return cls(mission=mission, steering=steering, params=params, radio_params=rp,
+                   distributed=distributed, waypoints=waypoints, wp_start=wp_start,
+                   cp_steps=cp_steps)
 
-    def record(self, streams: Streams, scenario: Scenario, *,
-               trajectory: bool = False) -> RunRecord:
-        """The kernel's record of one run from its random streams and initial conditions."""
+    @property
+    def kernel(self) -> Callable[..., RunRecord]:
+        """The kernel compiled for this team's rule and the mission's radio model."""
+        return kernel_for(self.steering.rule, get_radio(self.mission.radio))
+
+    def arguments(self, streams: Streams, scenario: Scenario, *,
+                  trajectory: bool = False) -> tuple[object, ...]:
+        """The kernel's arguments for one run from its random streams and initial conditions."""
         n = self.mission.team.drones
         if scenario.positions is None:
             pos0 = np.tile(np.asarray(self.mission.area.bs_xy, dtype=float), (n, 1))
         else:
             pos0 = np.asarray(scenario.positions, dtype=float)
-        return simulate_kernel(
-            self.params._replace(record=trajectory), float(scenario.target[0]),
-            float(scenario.target[1]), pos0, takeoff_headings(scenario, self.distributed),
-            self.waypoints, self.wp_start, self.cp_steps, streams.turn, streams.shadow,
-            streams.look,
-        )
+        return (self.params._replace(record=trajectory), self.radio_params,
+                float(scenario.target[0]), float(scenario.target[1]), pos0,
+                takeoff_headings(scenario, self.distributed), self.waypoints, self.wp_start,
+                self.cp_steps, streams.turn, streams.shadow, streams.look)
+
+    def record(self, streams: Streams, scenario: Scenario, *,
+               trajectory: bool = False) -> RunRecord:
+        """The kernel's record of one run from its random streams and initial conditions."""
+        kernel = self.kernel
+        args = self.arguments(streams, scenario, trajectory=trajectory)
+        if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
+            return kernel(*args)
+        try:
+            return kernel(*args)
+        except NumbaError as exc:
+            rule = self.steering.rule.name if self.steering.rule else "(routes only)"
+            detail = next((line.strip() for line in str(exc).splitlines()
+                           if line.strip() and not line.startswith("-")), "")
+            raise ConfigError(f"the kernel for rule {rule!r} and radio model "
+                              f"{self.mission.radio!r} does not compile (a plug-in's hook "
+                              f"does not fit the engine's types, docs/plugins.md): "
+                              f"{detail}") from exc
 
     def run(self, seed: int = 0, run: int = 0, *, scenario: Scenario | None = None,
             trajectory: bool = False) -> RunResult:

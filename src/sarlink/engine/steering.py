@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from sarlink.engine.codes import Rule
+from sarlink.engine.hooks import DistributedRule
 
 
 @dataclass(frozen=True)
@@ -14,12 +14,11 @@ class Steering:
     """How a team is steered: a rule for the distributed drones, routes for the others.
 
     ``routes[i]`` is drone ``i``'s waypoint array of shape ``(k, 2)`` (ending at the BS), or an
-    empty ``(0, 2)`` array when drone ``i`` runs the distributed ``rule``. A team of routes
-    only has ``rule = Rule.NONE``.
+    empty ``(0, 2)`` array when drone ``i`` runs the distributed ``rule``; drones past the end
+    of ``routes`` run the rule too. A team of routes only has ``rule = None``.
     """
 
-    rule: Rule
-    alpha: float = 0.0
+    rule: DistributedRule | None
     routes: tuple[np.ndarray, ...] = field(default=())
 
     def distributed(self, drones: int) -> np.ndarray:

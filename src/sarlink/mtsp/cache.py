@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from filelock import FileLock
 
+from sarlink.cachedir import cache_root
 from sarlink.config import ConfigError
 from sarlink.mtsp.grid import grid_cells
 from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT
@@ -45,11 +46,7 @@ _MEMO: dict[str, MtspPlan] = {}
 def cache_dir() -> Path:
     """Where plans are stored: ``$SARLINK_CACHE_DIR/plans`` if the variable is set, else
     ``$XDG_CACHE_HOME/sarlink/plans`` (``~/.cache/sarlink/plans`` by default)."""
-    root = os.environ.get("SARLINK_CACHE_DIR")
-    if root:
-        return Path(root) / "plans"
-    xdg = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
-    return Path(xdg) / "sarlink" / "plans"
+    return cache_root() / "plans"
 
 
 def clear_cache(*, disk: bool = True) -> int:

@@ -1,29 +1,19 @@
-"""Planner registry: planners are looked up by name (``covb``, ``conb``, ``concov``, ...)."""
+"""Planners: the two kinds (:class:`RoutePlanner`, :class:`RulePlanner`), the paper's five,
+and the registry that finds any of them by name (docs/plugins.md)."""
 
 from __future__ import annotations
 
-from sarlink.planners.base import Planner, Steering
-from sarlink.planners.conb import ConB
-from sarlink.planners.concov import ConCov
-from sarlink.planners.covb import CovB
-from sarlink.planners.mtsp import Mtsp
-from sarlink.planners.mtsp_conb import MtspConB
+from sarlink.planners.base import Planner, RoutePlanner, RulePlanner, Steering
+from sarlink.planners.paper import PAPER
+from sarlink.planners.registry import (
+    get_planner,
+    planner_entries,
+    planner_names,
+    register_planner,
+)
 
-__all__ = ["PLANNERS", "Planner", "Steering", "get_planner", "planner_names"]
+__all__ = ["PAPER", "PAPER_PLANNERS", "Planner", "RoutePlanner", "RulePlanner", "Steering",
+           "get_planner", "planner_entries", "planner_names", "register_planner"]
 
-PLANNERS: dict[str, Planner] = {p.name: p for p in (Mtsp(), CovB(), ConB(), MtspConB(), ConCov())}
-"""Every planner by name, in the order of the paper's legends; figures and reproductions draw
-every registered planner in this order."""
-
-
-def planner_names() -> list[str]:
-    """Names of the registered planners, in registration order (the paper's legend order)."""
-    return list(PLANNERS)
-
-
-def get_planner(name: str) -> Planner:
-    """The planner registered as ``name``."""
-    try:
-        return PLANNERS[name]
-    except KeyError:
-        raise KeyError(f"unknown planner {name!r}; known: {', '.join(PLANNERS)}") from None
+PAPER_PLANNERS: tuple[str, ...] = tuple(p.name for p in PAPER)
+"""The names of the paper's planners, in the order of its legends: what its figures draw."""

@@ -1,30 +1,29 @@
-"""The distributed planners' rules: CovB's push, ConB's prediction and contact choice, and
-ConCov's blend of the two (docs/model.md, Planners).
+"""ConB: distributed planner that keeps drones attached to the BS (Section 3.2, Eqs. 9-11), as a
+rule plug-in.
 
-Every drone that decides this step gets its new direction from the state before anyone turns.
-ConB's directions are computed for all deciding drones in one pass (no array-taking helper
-called per drone: Numba counts the references of every array it hands to an inlined helper,
-two atomic operations each, which cost a quarter of a ConB run); :func:`steer` then applies
-the team's rule and the boundary rule in one pass over the drones (docs/architecture.md).
+A drone predicts the graph a sensing period ahead (every node keeping its heading, links at the
+radio's nominal range: a drone cannot foresee fading) and, if it would lose its route to the
+BS, steers towards where its longest-contact neighbour will be when the contact ends. With
+``conb_check = continuous`` the prediction runs every step for every increment up to
+``t + t_s`` (:func:`check_continuously`, the rule's ``due`` hook). Directions are computed for
+all deciding drones in one pass: Numba counts the references of every array handed to a
+helper called per drone (docs/architecture.md).
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
-from sarlink.engine.geometry import TINY, unit
-from sarlink.engine.graph import add, bit, drop, lowest, push_new
-from sarlink.engine.motion import boundary_turn
+from sarlink.engine.geometry import FAR, TINY, unit
+from sarlink.engine.graph import add, bit, drop, push_new
+from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
-    CONB,
-    CONCOV,
-    CONNECTED_NONE,
-    COVB,
-    FALLBACK_CONNECTIVITY,
+    CONTINUOUS,
     ISOLATED_HOME,
     LANDED,
     SEARCHING,
@@ -35,42 +34,26 @@ _ONE = np.uint64(1)
 _ZERO = np.uint64(0)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def uses_covb(p: Params) -> bool:
-    """Whether the team needs CovB's force (CovB, or ConCov with α > 0)."""
-    return p.rule == COVB or (p.rule == CONCOV and p.alpha > 0.0)
+class Workspace(NamedTuple):
+    """ConB's arrays, allocated once per run."""
+
+    qx: np.ndarray  # predicted positions (padded like the kernel's)
+    qy: np.ndarray
+    disc2: np.ndarray  # squared nominal link ranges, none to the padding
+    routed_next: np.ndarray  # predicted to keep a route to the BS
+    routed_step: np.ndarray  # the same at one increment (continuous check)
+    stack: np.ndarray
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def uses_conb(p: Params) -> bool:
-    """Whether the team needs ConB's force (ConB, or ConCov with α < 1)."""
-    return p.rule == CONB or (p.rule == CONCOV and p.alpha < 1.0)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def covb_force(i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-               near: np.ndarray, flying: np.ndarray, r: float) -> tuple[float, float]:
-    """Unit direction of Eq. 6 for drone ``i``: own heading / r plus a 1/d push from each
-    flying drone within r (``near & flying``), added in increasing drone order. No
-    neighbour: keep the heading."""
-    fx, fy = hx[i] / r, hy[i] / r
-    neighbours = False
-    for w in range(flying.shape[0]):
-        bits = near[i, w] & flying[w]
-        while bits:
-            j = w * 64 + lowest(bits)
-            bits &= bits - _ONE
-            neighbours = True
-            dx = px[i] - px[j]
-            dy = py[i] - py[j]
-            dd = dx * dx + dy * dy
-            if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
-                fx += dx / dd
-                fy += dy / dd
-    ux, uy = hx[i], hy[i]
-    if neighbours:
-        ux, uy = unit(fx, fy, ux, uy)
-    return ux, uy
+def workspace(obs: Observation) -> Workspace:
+    """ConB's arrays for the run observed through ``obs``."""
+    m, mp = obs.adj.shape[0], obs.px.shape[0]
+    nw = obs.adj.shape[1]
+    disc2 = np.zeros((m, mp))
+    disc2[:, :m] = obs.rc * obs.rc
+    return Workspace(np.full(mp, FAR), np.full(mp, FAR), disc2, np.zeros(nw, dtype=np.uint64),
+                     np.zeros(nw, dtype=np.uint64), np.empty(m, dtype=np.int64))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -152,13 +135,13 @@ def check_continuously(
 @njit(cache=True, inline="always", error_model="numpy")
 def conb_headings(
     deciding: np.ndarray, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params, vx: np.ndarray,
-    vy: np.ndarray,
+    mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params, rc: float,
+    no_term: bool, vx: np.ndarray, vy: np.ndarray,
 ) -> None:
     """Unit direction of Eq. 9 (Algorithm 1, part 2) of every deciding drone, into ``vx, vy``.
 
     A drone keeps its heading if it is predicted to keep its route to the BS (``routed_next``;
-    ConCov's term is then zero with ``concov_connected = none``); else it steers towards where
+    the term is zero instead with ``no_term``: ConCov's ``concov_connected = none``); else it steers towards where
     the neighbour with the longest contact (among those predicted to keep a route to the BS,
     if any, with ``contacts = routed``) would be when the contact ends; a drone without
     neighbours keeps its heading or, with ``isolated = home``, turns to the BS.
@@ -166,8 +149,7 @@ def conb_headings(
     BS's predicted component here, so removing it changes nothing.
     """
     n = hx.shape[0]
-    rc2 = p.rc * p.rc
-    no_term = p.rule == CONCOV and p.concov_connected == CONNECTED_NONE and p.alpha > 0.0
+    rc2 = rc * rc
     for i in range(n):
         if not deciding[i]:
             continue
@@ -221,49 +203,42 @@ def conb_headings(
         vx[i], vy[i] = ux, uy
 
 
+
+
 @njit(cache=True, inline="always", error_model="numpy")
-def blend(p: Params, cx: float, cy: float, vx: float, vy: float, hx: float,
-          hy: float) -> tuple[float, float]:
-    """The team rule's new heading from CovB's unit force ``(cx, cy)`` and ConB's ``(vx, vy)``:
-    one of them, or ConCov's ``α R_cov + (1 − α) R_con`` re-scaled to length 1 (Eq. 12).
-
-    At ``α = 1`` (``0``) Eq. 12 is exactly the CovB (ConB) direction and is used as such, so
-    those trajectories are identical to the pure rules'. Where the two terms cancel, the drone
-    keeps its heading or, with ``concov_fallback = connectivity``, follows ConB's term.
-    """
-    if p.rule == COVB or (p.rule == CONCOV and p.alpha == 1.0):
-        return cx, cy
-    if p.rule == CONB or p.alpha == 0.0:
-        return vx, vy
-    if p.concov_fallback == FALLBACK_CONNECTIVITY:
-        hx, hy = vx, vy
-    return unit(p.alpha * cx + (1.0 - p.alpha) * vx, p.alpha * cy + (1.0 - p.alpha) * vy,
-                hx, hy)
+def prepare(p: Params, obs: Observation) -> Workspace:
+    """The workspace of a ConB team."""
+    return workspace(obs)
 
 
-@njit(cache=True, error_model="numpy")
-def steer(k: int, p: Params, deciding: np.ndarray, px: np.ndarray, py: np.ndarray,
-          hx: np.ndarray, hy: np.ndarray, mode: np.ndarray, on_route: np.ndarray,
-          last_change: np.ndarray, near: np.ndarray, flying: np.ndarray, con_x: np.ndarray,
-          con_y: np.ndarray, nhx: np.ndarray, nhy: np.ndarray,
-          rng: np.random.Generator) -> None:
-    """The new heading of every searching distributed drone: the team's rule for those that
-    decide this step (ConB's directions precomputed in ``con_x, con_y``), then the boundary
-    rule (:func:`sarlink.engine.motion.boundary_turn`), which counts as a direction change.
+@njit(cache=True, inline="always", error_model="numpy")
+def due(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray) -> bool:
+    """With ``conb_check = continuous``, the drones that decide now because a loss of their
+    route is predicted within the sensing period; returns whether any drone decides."""
+    if p.conb_check != CONTINUOUS:
+        any_deciding = False
+        for i in range(deciding.shape[0]):
+            any_deciding |= deciding[i]
+        return any_deciding
+    return check_continuously(k, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.on_route, obs.pz,
+                              p, ws.qx, ws.qy, ws.disc2, ws.routed_next, ws.routed_step,
+                              ws.stack, deciding, obs.last_change)
 
-    One pass over the drones: at N = 22 a step costs about a microsecond, and every extra
-    pass shows.
-    """
-    step = p.speed * p.dt
-    covb = uses_covb(p)
-    for i in range(hx.shape[0]):
-        if on_route[i] or mode[i] != SEARCHING:  # flying a route, home or landed
-            continue
-        if deciding[i]:
-            cx, cy = hx[i], hy[i]
-            if covb:
-                cx, cy = covb_force(i, px, py, hx, hy, near, flying, p.r)
-            nhx[i], nhy[i] = blend(p, cx, cy, con_x[i], con_y[i], hx[i], hy[i])
-        nhx[i], nhy[i], turned = boundary_turn(px[i], py[i], nhx[i], nhy[i], step, p.size, rng)
-        if turned:
-            last_change[i] = k
+
+@njit(cache=True, inline="always", error_model="numpy")
+def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray, no_term: bool,
+               vx: np.ndarray, vy: np.ndarray) -> None:
+    """Eq. 9's direction of every deciding drone, predicting the routes a sensing period ahead
+    unless the continuous check already did."""
+    if p.conb_check != CONTINUOUS:
+        predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, p.ts_steps, ws.qx,
+                       ws.qy, ws.disc2, ws.routed_next, ws.stack)
+    conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
+                  p, obs.rc, no_term, vx, vy)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def decide(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
+           vx: np.ndarray, vy: np.ndarray) -> None:
+    """ConB's direction for every deciding drone."""
+    directions(p, obs, ws, deciding, False, vx, vy)

@@ -1,0 +1,114 @@
+"""The engine's plug-in seams: a distributed rule and a radio model (docs/plugins.md).
+
+Both are plain descriptions of Numba-compilable functions. The kernel is compiled once per
+pair of rule and radio model with their functions inlined (:mod:`sarlink.engine.build`), so a
+plug-in runs at the speed of the built-in ones, which are written on these same seams
+(:mod:`sarlink.engine.rules`, :mod:`sarlink.engine.radios`).
+
+Hook signatures (``p`` is :class:`~sarlink.engine.params.Params`, ``obs`` an
+:class:`~sarlink.engine.observation.Observation`, ``ws`` whatever ``prepare`` returned):
+
+- rule ``prepare(p, obs) -> ws``: once per run, the rule's own arrays;
+- rule ``due(k, p, obs, ws, deciding) -> bool`` (optional): after the sensing-period schedule
+  has marked ``deciding``, mark drones that must decide now as well (setting their
+  ``obs.last_change[i] = k``); return whether any drone decides;
+- rule ``decide(k, p, obs, ws, deciding, vx, vy) -> None``: write the new unit direction
+  ``(vx[i], vy[i])`` of every drone ``i`` with ``deciding[i]``; the boundary rule applies after;
+- radio ``init(p, rp, m, mp) -> thr2``: the squared link range of every pair of the ``m``
+  nodes, shape ``(m, mp)`` (zero towards the ``mp - m`` padding nodes);
+- radio ``update(thr2, p, rp, k, rng) -> None``: refill ``thr2`` at step ``k`` where it changes;
+- radio ``nominal(p, rp) -> float``: the range planners predict with, m.
+
+``rp`` is the radio's parameter array (``RadioModel.params``).
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from sarlink.config import ConfigError
+
+if TYPE_CHECKING:
+    from sarlink.config import Mission
+
+_RULE_HOOKS = {"prepare": 2, "due": 5, "decide": 7}
+_RADIO_HOOKS = {"init": 4, "update": 5, "nominal": 2}
+
+
+def python_function(fn: Any) -> Callable[..., Any]:
+    """The Python function behind ``fn`` (a Numba dispatcher's ``py_func``, or ``fn``)."""
+    return getattr(fn, "py_func", fn)
+
+
+def check_hook(kind: str, name: str, hook: str, fn: Any, arity: int) -> None:
+    """Raise a :class:`ConfigError` naming the plug-in unless ``fn`` is a module-level function
+    of ``arity`` positional parameters (the kernel imports it by its module and name)."""
+    py = python_function(fn)
+    where = f"{kind} {name!r}: {hook}"
+    if not inspect.isfunction(py):
+        raise ConfigError(f"{where} must be a function (plain or numba.njit), got {fn!r}")
+    params = inspect.signature(py).parameters.values()
+    positional = [q for q in params if q.kind in (q.POSITIONAL_ONLY, q.POSITIONAL_OR_KEYWORD)]
+    if len(positional) != arity or len(positional) != len(params):
+        raise ConfigError(f"{where}{inspect.signature(py)} must take exactly {arity} "
+                          f"positional parameters (docs/plugins.md)")
+    if "<locals>" in py.__qualname__ or py.__module__ is None:
+        raise ConfigError(f"{where} must be defined at the top level of a module, so that "
+                          f"compiled kernels can import it; {py.__qualname__} is not")
+
+
+@dataclass(frozen=True)
+class DistributedRule:
+    """A direction-update rule for the drones that do not fly routes.
+
+    ``near`` asks the engine to fill ``obs.near`` (pairs within the sensing range) on the
+    steps at which drones decide; ``readings`` names the fields of
+    :class:`sarlink.config.Readings` that change its runs (the sensitivity analysis reruns
+    only the rules a choice reaches).
+    """
+
+    name: str
+    decide: Callable[..., Any]
+    prepare: Callable[..., Any] | None = None
+    due: Callable[..., Any] | None = None
+    near: bool = False
+    readings: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        for hook, arity in _RULE_HOOKS.items():
+            fn = getattr(self, hook)
+            if fn is not None:
+                check_hook("rule", self.name, hook, fn, arity)
+
+    def hooks(self) -> dict[str, Callable[..., Any] | None]:
+        """The hook functions by name (``None``: the engine's default)."""
+        return {hook: getattr(self, hook) for hook in _RULE_HOOKS}
+
+
+@dataclass(frozen=True)
+class RadioModel:
+    """A channel model: which pairs of nodes are linked, step by step.
+
+    ``static`` says the thresholds never change after ``init`` (a team that has settled can
+    then jump to the horizon); ``params`` maps a mission to the model's parameter array
+    ``rp`` (default: none: the built-in models read the mission's ``channel`` scalars from
+    ``p``).
+    """
+
+    name: str
+    init: Callable[..., Any]
+    update: Callable[..., Any]
+    nominal: Callable[..., Any]
+    static: bool = False
+    params: Callable[[Mission], Sequence[float]] | None = None
+
+    def __post_init__(self) -> None:
+        for hook, arity in _RADIO_HOOKS.items():
+            check_hook("radio model", self.name, hook, getattr(self, hook), arity)
+
+    def hooks(self) -> dict[str, Callable[..., Any]]:
+        """The hook functions by name."""
+        return {hook: getattr(self, hook) for hook in _RADIO_HOOKS}

@@ -1,0 +1,20 @@
+"""The built-in distributed rules, on the same seam as plug-in ones (:class:`DistributedRule`)."""
+
+from __future__ import annotations
+
+from sarlink.engine.hooks import DistributedRule
+from sarlink.engine.rules import conb, concov, covb
+
+__all__ = ["CONB", "CONCOV", "COVB"]
+
+_CONB_READINGS = ("conb_check", "contacts", "isolated")
+
+COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True)
+"""CovB's repulsion (Eqs. 6-8)."""
+CONB = DistributedRule("conb", conb.decide, prepare=conb.prepare, due=conb.due,
+                       readings=_CONB_READINGS)
+"""ConB's attachment to the BS (Eqs. 9-11)."""
+CONCOV = DistributedRule("concov", concov.decide, prepare=concov.prepare, due=concov.due,
+                         near=True,
+                         readings=(*_CONB_READINGS, "concov_fallback", "concov_connected"))
+"""ConCov's blend of the two (Eq. 12)."""
