@@ -50,7 +50,6 @@ def serve(case: str, run: int, reading: str) -> None:
     """Compile the kernel, print its addresses, stop until gdb attaches, then do one run."""
     sys.path.insert(0, str(ROOT / "benchmarks"))
     from bench_paired import Side, case_mission, uncached
-
     from sarlink import prepare
 
     side = Side(case_mission, prepare, uncached(None))

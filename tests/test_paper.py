@@ -21,8 +21,9 @@ import pandas as pd
 import pytest
 from typer.testing import CliRunner
 
-from sarlink import ConfigError, Mission
+from sarlink import ConfigError
 from sarlink.cli import app
+from sarlink.engine.rules import COVB
 from sarlink.metrics import MEASURES, summarize, wilson
 from sarlink.paper import ReproductionResult, check_all, load_runs, reproduce, tally
 from sarlink.paper import findings as claims
@@ -38,7 +39,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, Settings
-from sarlink.planners import PLANNERS, Steering, get_planner, planner_names
+from sarlink.planners import PAPER_PLANNERS, RulePlanner, planner_names, registry
 
 # -- the end-to-end run --------------------------------------------------------------------------
 
@@ -73,7 +74,7 @@ def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: Reproductio
     data = re.search(r'id="sarlink-data">(.*?)</script>', quick.replay.read_text(), re.S)
     assert data is not None
     panels = json.loads(data.group(1))["panels"]
-    assert sorted(p["planner"] for p in panels) == sorted(PLANNERS)
+    assert sorted(p["planner"] for p in panels) == sorted(PAPER_PLANNERS)
     assert all(p["rc"] == 500.0 and p["tNotify"] is not None for p in panels)
     assert "(replay-rc500.html)" in quick.report_md.read_text()
     assert 'href="replay-rc500.html"' in quick.report_html.read_text()
@@ -82,7 +83,7 @@ def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: Reproductio
 def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
         quick: ReproductionResult) -> None:
     runs = load_runs(quick.out, "main")
-    assert len(runs) == 10 * len(PLANNERS) * len(DRONES) * len(RANGES)
+    assert len(runs) == 10 * len(PAPER_PLANNERS) * len(DRONES) * len(RANGES)
     recomputed = summarize(runs, td=[1000.0, 2000.0, 4000.0], by=["planner", "drones", "rc"])
     stored = pd.read_csv(quick.out / "tables" / "main.csv")
     cols = ["P_s", "P_s_lo", "immediate", "mission_time", "mission_time_se", "reachability"]
@@ -109,7 +110,7 @@ def test_report_numbers_equal_those_recomputed_from_the_stored_runs(
               "ConCov": "concov"}
 
     fig3 = _report_table(md, "### Figure 3")
-    assert len(fig3) == len(PLANNERS) * len(DRONES) * len(RANGES)
+    assert len(fig3) == len(PAPER_PLANNERS) * len(DRONES) * len(RANGES)
     for rc, label, n, cell in fig3:
         row = main[(main["planner"] == labels[label]) & (main["drones"] == int(n))
                    & (main["rc"] == float(rc)) & (main["td"] == 2000.0)].iloc[0]
@@ -521,27 +522,16 @@ def test_difference_interval_is_newcombes() -> None:
 # -- the paper layer follows the planner registry ----------------------------------------------
 
 
-@dataclass(frozen=True)
-class Made:
-    """A made-up planner: CovB's rule under another name, colour and marker."""
-
-    name: str = "made-up"
-    label: str = "MadeUp"
-    colour: str = "#123456"
-    marker: str = "P"
-
-    def steering(self, mission: Mission) -> Steering:
-        return get_planner("covb").steering(mission)
+MADE_UP = RulePlanner("made-up", "MadeUp", COVB, colour="#123456", marker="P")
+"""A made-up planner: CovB's rule under another name, colour and marker."""
 
 
-def test_a_registered_planner_joins_the_experiments_and_the_figures(
+def test_the_paper_keeps_its_planners_and_draws_a_registered_one_in_its_style(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setitem(PLANNERS, "made-up", Made())
+    monkeypatch.setitem(registry._ENTRIES, "made-up", registry.Entry(MADE_UP, "test"))
     assert planner_names()[-1] == "made-up"
     for exp in EXPERIMENTS.values():
-        experiment = exp.build(10)
-        assert experiment.grid["planner"] == planner_names()
-        assert "made-up" in {mission.team.planner for _, mission in experiment.points()}
+        assert exp.build(10).grid["planner"] == list(PAPER_PLANNERS)
 
     table = pd.concat([made_up(), made_up().query("planner == 'covb'").assign(planner="made-up")])
     fig = fig3(table)

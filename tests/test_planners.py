@@ -1,41 +1,78 @@
-"""The planner registry matches the modules on disk, and every planner flies."""
+"""The planner registry, and the contract every registered planner keeps (sarlink.testing).
+
+Nothing here lists the planners: a planner added to sarlink or installed as a plug-in is
+checked by the same tests, the way VMAS tests every scenario.
+"""
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-import sarlink.planners as planners_pkg
-from sarlink import Mission, get_planner, planner_names, simulate
-from sarlink.planners import PLANNERS
+from sarlink import ConfigError, Mission, RoutePlanner, get_planner, planner_names, simulate
+from sarlink.planners import PAPER_PLANNERS, registry
+from sarlink.testing import check_planner, check_run
 
 
-def test_registry_matches_the_planner_modules_on_disk() -> None:
-    folder = Path(planners_pkg.__file__).parent
-    modules = {p.stem.replace("_", "-") for p in folder.glob("*.py")} - {"--init--", "base"}
-    assert set(planner_names()) == modules
+def test_the_paper_planners_come_first_in_the_order_of_its_legends() -> None:
+    assert PAPER_PLANNERS == ("mtsp", "covb", "conb", "mtsp-conb", "concov")
+    assert tuple(planner_names()[:5]) == PAPER_PLANNERS
 
 
-def test_unknown_planner_is_a_clear_error() -> None:
-    with pytest.raises(KeyError, match="unknown planner 'nope'; known: mtsp, covb, conb"):
+def test_every_planner_has_its_own_style_and_a_kind() -> None:
+    planners = [get_planner(n) for n in planner_names()]
+    styles = [(p.colour, p.marker) for p in planners]
+    assert len(set(styles)) == len(styles)
+    for p in planners:
+        assert p.kind in ("route", "rule", "hybrid")
+        assert (p.rule is None) == (p.kind == "route")
+
+
+def test_an_unknown_planner_is_one_clear_error_naming_the_known_ones() -> None:
+    with pytest.raises(ConfigError, match=r"team.planner: unknown planner 'nope'; known: mtsp, "):
         get_planner("nope")
+    with pytest.raises(ConfigError, match="unknown planner 'nope'"):
+        simulate(Mission.build(planner="nope"))
 
 
-def test_planners_are_registered_in_the_paper_legend_order_with_distinct_styles() -> None:
-    assert planner_names() == ["mtsp", "covb", "conb", "mtsp-conb", "concov"]
-    styles = [(p.colour, p.marker) for p in PLANNERS.values()]
-    assert len({c for c, _ in styles}) == len({m for _, m in styles}) == len(styles)
+def _diagonal(mission: Mission) -> list[np.ndarray]:
+    a = mission.area.size
+    return [np.array([[a * (i + 1) / (mission.team.drones + 1)] * 2])
+            for i in range(mission.team.drones)]
 
 
-@pytest.mark.parametrize("name", list(PLANNERS))
-def test_every_planner_flies_a_mission(name: str) -> None:
-    mission = Mission.build(planner=name, drones=8, horizon=600.0)
-    steering = get_planner(name).steering(mission)
-    assert len(steering.routes) <= mission.team.drones
-    result = simulate(mission, seed=0, trajectory=True)
+def test_a_planner_registered_in_code_flies_by_name(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
+    planner = RoutePlanner("diagonal", "Diagonal", _diagonal, colour="#000000", marker="x")
+    assert registry.register_planner(planner) is planner
+    assert planner_names()[-1] == "diagonal"
+    origin = registry.planner_entries()["diagonal"].origin
+    assert origin.startswith("code (") and origin.endswith("test_planners)")
+    result = simulate(Mission.build(planner="diagonal", drones=3), trajectory=True)
     assert result.trajectory is not None
-    assert np.isfinite(result.trajectory.positions).all()
-    moved = np.linalg.norm(result.trajectory.positions[-1] - result.trajectory.positions[0], axis=1)
-    assert (moved > 0).any()
+    # each drone flies to its point on the diagonal and lands at the BS (appended)
+    bs = np.asarray(Mission().area.bs_xy)
+    np.testing.assert_allclose(result.trajectory.positions[-1], np.tile(bs, (3, 1)))
+    with pytest.raises(ConfigError, match="planner name 'diagonal' is taken"):
+        registry.register_planner(RoutePlanner("diagonal", "Other", _diagonal))
+    registry.register_planner(RoutePlanner("diagonal", "Other", _diagonal), replace=True)
+    assert get_planner("diagonal").label == "Other"
+
+
+@pytest.mark.parametrize("name", planner_names())
+def test_every_registered_planner_keeps_the_contract(name: str) -> None:
+    check_planner(name, drones=(1, 6), runs=2, horizon=1200.0, rc=500.0)
+
+
+def test_the_contract_catches_a_planner_that_leaves_the_area(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The contract can fail: a run whose drone is outside the area is caught (the route
+    check already refuses waypoints outside, so the run is altered after the flight)."""
+    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
+    registry.register_planner(RoutePlanner("ok", "OK", _diagonal))
+    check_planner("ok", drones=(2,), runs=1, horizon=600.0)
+    result = simulate(Mission.build(planner="ok", drones=2, horizon=600.0), trajectory=True)
+    assert result.trajectory is not None
+    result.trajectory.positions[10, 1] = (-5.0, 10.0)
+    with pytest.raises(AssertionError, match="drone 1 leaves the area"):
+        check_run(result, Mission.build(planner="ok", drones=2, horizon=600.0))

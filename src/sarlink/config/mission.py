@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Literal, Self
 
-from pydantic import BaseModel, Field, field_validator, model_validator
+from pydantic import BaseModel, Field, model_validator
 
 from sarlink.config.base import Checked, ConfigError
 
@@ -53,8 +53,9 @@ class Team(Checked):
 
     drones: int = Field(10, ge=1, le=1000, strict=True, description="number of drones N_m")
     speed: float = Field(5.0, gt=0, description="flight speed V_m, m/s")
-    planner: str = Field("covb", min_length=1, description="planner name, see sarlink.planner_names() "
-                         "(checked where a mission becomes work: sarlink.prepare)")
+    planner: str = Field("covb", min_length=1,
+                         description="planner name, see sarlink.planner_names() (checked where "
+                         "a mission becomes work: sarlink.prepare)")
     alpha: float = Field(0.5, ge=0, le=1, description="ConCov weight of coverage (Eq. 12)")
     nr: int = Field(6, ge=1, strict=True,
                     description="mTSP-ConB: drones reserved for the mTSP plan")

@@ -1,7 +1,8 @@
 """Named readings of the paper: sets of the choices it leaves open (docs/model.md, Readings).
 
 A reading fixes every field of :class:`~sarlink.config.mission.Readings` (how the distributed
-rules read the paper) and Fig. 3's target duration, which the paper does not state. The
+rules read the paper) and Fig. 3's target duration, which the paper does not state. Which
+choices reach which rule, each rule says itself (``DistributedRule.readings``). The
 default reading is what ``Mission()`` gives; it was chosen by measurement (docs/model.md).
 """
 
@@ -11,23 +12,7 @@ from dataclasses import dataclass, field
 
 from sarlink.config.base import ConfigError
 
-__all__ = ["AFFECTS", "DEFAULT_READING", "READINGS", "Reading", "get_reading", "relevant"]
-
-AFFECTS: dict[str, frozenset[str]] = {
-    "conb_check": frozenset({"conb", "concov"}),
-    "contacts": frozenset({"conb", "concov"}),
-    "isolated": frozenset({"conb", "concov"}),
-    "concov_fallback": frozenset({"concov"}),
-    "concov_connected": frozenset({"concov"}),
-}
-"""Each choice, and the distributed rules (by name: a planner's ``rule.name.lower()``) whose
-runs it can change; a team of another rule flies the same under every value."""
-
-
-def relevant(rule: str) -> list[str]:
-    """The choices that can change the runs of a team whose distributed rule is ``rule``."""
-    return [choice for choice, rules in AFFECTS.items() if rule in rules]
-
+__all__ = ["DEFAULT_READING", "READINGS", "Reading", "get_reading"]
 
 @dataclass(frozen=True)
 class Reading:

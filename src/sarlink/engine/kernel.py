@@ -33,6 +33,7 @@ from sarlink.engine.params import (
 )
 from sarlink.engine.records import NEVER, RunRecord
 
+# isort: off
 # ---- plug-ins: this block is replaced per rule and radio model (sarlink.engine.build) ----
 from sarlink.engine.radios.disc import init as radio_init
 from sarlink.engine.radios.disc import nominal as radio_nominal
@@ -45,6 +46,7 @@ RULE_DUE = False
 RULE_NEAR = False
 RADIO_STATIC = True
 # ---- end of plug-ins ----
+# isort: on
 
 
 @njit(cache=True, error_model="numpy", nogil=True)

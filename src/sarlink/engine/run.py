@@ -3,8 +3,8 @@ kernel's record into a :class:`~sarlink.RunResult`."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numba.core.errors import NumbaError
@@ -83,7 +83,7 @@ class Prepared:
                    cp_steps=cp_steps)
 
     @property
-    def kernel(self) -> Callable[..., RunRecord]:
+    def kernel(self) -> Any:
         """The kernel compiled for this team's rule and the mission's radio model."""
         return kernel_for(self.steering.rule, get_radio(self.mission.radio))
 
@@ -111,8 +111,8 @@ class Prepared:
             return kernel(*args)
         except NumbaError as exc:
             rule = self.steering.rule.name if self.steering.rule else "(routes only)"
-            detail = next((line.strip() for line in str(exc).splitlines()
-                           if line.strip() and not line.startswith("-")), "")
+            detail = next((line.strip() for line in str(exc).splitlines() if line.strip()
+                           and not line.startswith(("Failed in", "During:", "-"))), str(exc))
             raise ConfigError(f"the kernel for rule {rule!r} and radio model "
                               f"{self.mission.radio!r} does not compile (a plug-in's hook "
                               f"does not fit the engine's types, docs/plugins.md): "

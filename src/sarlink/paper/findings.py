@@ -50,12 +50,10 @@ from sarlink.paper.experiments import (
     TD_LONG,
     TD_SHORT,
 )
-from sarlink.planners import get_planner
+from sarlink.planners import PAPER_PLANNERS, get_planner
 
 __all__ = ["CLAIMS", "DEFAULT_SETTINGS", "Claim", "Finding", "Settings", "check_all", "tally"]
 
-PAPER_PLANNERS = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
-"""The schemes the paper's claims are about."""
 NEAR_ONE = 0.9
 """A probability whose interval lies above this is "near 1" (the paper's "higher than 90%")."""
 ABOUT = 0.1

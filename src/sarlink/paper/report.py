@@ -36,7 +36,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES
 from sarlink.paper.findings import CLAIMS, Finding, tally
-from sarlink.planners import get_planner, planner_names
+from sarlink.planners import PAPER_PLANNERS, get_planner
 
 __all__ = ["ReplayLink", "Stage", "machine", "write_report"]
 
@@ -123,7 +123,7 @@ def _pairs(rows: Sequence[tuple[str, str]], header: tuple[str, str]) -> pd.DataF
 
 def _setting(runs: int, quick: bool, reading: Reading) -> list[_Block]:
     m = Mission.build(reading=reading.name)
-    labels = ", ".join(get_planner(p).label for p in planner_names())
+    labels = ", ".join(get_planner(p).label for p in PAPER_PLANNERS)
     rows = [
         ("area a × a", f"{m.area.size:g} m × {m.area.size:g} m, BS at the centre"),
         ("drone speed V_m", f"{m.team.speed:g} m/s"),

@@ -37,7 +37,7 @@ from sarlink.paper.figures import FIGURES, save
 from sarlink.paper.findings import Finding, Settings, check_all
 from sarlink.paper.report import ReplayLink, Sensitivity, Stage, machine, write_report
 from sarlink.paper.variants import Variant, flips, matrix, reading_tables, sensitivity
-from sarlink.planners import get_planner, planner_names
+from sarlink.planners import PAPER_PLANNERS, get_planner
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
 from sarlink.simulation import simulate
@@ -115,7 +115,7 @@ def _replay(out: Path, reading: str) -> ReplayLink:
     first run of the paper's seed that every planner notifies, so that each panel shows a
     detection and the multihop path that carried it to the BS."""
     mission = Mission.build(reading=reading, drones=10, rc=500.0)
-    planners = planner_names()
+    planners = list(PAPER_PLANNERS)
     run = next((k for k in range(100) if all(
         simulate(mission.replace(planner=p), seed=SEED, run=k).t_notify is not None
         for p in planners)), 0)

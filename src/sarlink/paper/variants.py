@@ -20,7 +20,6 @@ from typing import get_args
 import pandas as pd
 
 from sarlink.config import DEFAULT_READING, READINGS, Experiment, Reading, Readings, get_reading
-from sarlink.config.readings import relevant
 from sarlink.execution import sweep_all
 from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import EXPERIMENTS, PaperExperiment
@@ -45,7 +44,7 @@ def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
     grid = {k: v for k, v in experiment.grid.items() if k != "planner"}
     for name in experiment.grid["planner"]:
         planner = get_planner(name)
-        reach = relevant(planner.rule.name.lower())
+        reach = [c for c in _NEUTRAL if planner.rule is not None and c in planner.rule.readings]
         mission = experiment.mission.replace(
             planner=name, **{c: choices[c] if c in reach else _NEUTRAL[c] for c in _NEUTRAL})
         values = "-".join(choices[c] for c in reach) or "any"

@@ -4,6 +4,7 @@ packages (entry point group ``sarlink.planners``, loaded on first use; docs/plug
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import cast
 
 from sarlink.config import ConfigError
 from sarlink.entrypoints import discover
@@ -42,8 +43,9 @@ def _load_plugins() -> None:
         for obj in found.objects:
             if not _is_planner(obj):
                 _BROKEN[found.name] = f"{found.origin}: gave {obj!r}, not a planner"
-            elif obj.name not in _ENTRIES:  # type: ignore[attr-defined]
-                _ENTRIES[obj.name] = Entry(obj, found.origin)  # type: ignore[attr-defined]
+            else:
+                planner = cast(Planner, obj)
+                _ENTRIES.setdefault(planner.name, Entry(planner, found.origin))
 
 
 def register_planner(planner: Planner, *, replace: bool = False) -> Planner:

@@ -141,10 +141,10 @@ def conb_headings(
     """Unit direction of Eq. 9 (Algorithm 1, part 2) of every deciding drone, into ``vx, vy``.
 
     A drone keeps its heading if it is predicted to keep its route to the BS (``routed_next``;
-    the term is zero instead with ``no_term``: ConCov's ``concov_connected = none``); else it steers towards where
-    the neighbour with the longest contact (among those predicted to keep a route to the BS,
-    if any, with ``contacts = routed``) would be when the contact ends; a drone without
-    neighbours keeps its heading or, with ``isolated = home``, turns to the BS.
+    the term is zero instead with ``no_term``: ConCov's ``concov_connected = none``); else it
+    steers towards where the neighbour with the longest contact (among those predicted to keep
+    a route to the BS, if any, with ``contacts = routed``) would be when the contact ends; a
+    drone without neighbours keeps its heading or, with ``isolated = home``, turns to the BS.
     A neighbour's route "without i" is its route in the predicted graph: ``i`` is not in the
     BS's predicted component here, so removing it changes nothing.
     """
