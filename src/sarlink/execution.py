@@ -37,7 +37,7 @@ from rich.text import Text
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.simulation import prepare
+from sarlink.simulation import Plugins, adopt_plugins, check_mission, plugins_in_code, prepare
 
 __all__ = ["Workers", "start_workers", "sweep", "sweep_all"]
 
@@ -70,17 +70,22 @@ def _plan(store: storage.Store, runs: int, chunk: int) -> list[_Task]:
     return sorted(tasks, key=lambda t: (t.runs.start, order[t.point.hash]))
 
 
-def _run_chunk(mission_json: str, seed: int, start: int, stop: int) -> pa.Table:
-    """A task: runs ``start .. stop-1`` of one mission, as a table (in a worker process)."""
+def _run_chunk(mission_json: str, seed: int, start: int, stop: int,
+               plugins: Plugins) -> pa.Table:
+    """A task: runs ``start .. stop-1`` of one mission, as a table (in a worker process, with
+    the plug-ins its caller registered in code)."""
+    adopt_plugins(plugins)
     mission = Mission.model_validate_json(mission_json)
     prepared = prepare(mission)
     return storage.run_table(mission, seed, [prepared.run(seed, k).row()
                                              for k in range(start, stop)])
 
 
-def _calls(tasks: Sequence[_Task]) -> list[tuple[str, int, int, int]]:
+def _calls(tasks: Sequence[_Task]) -> list[tuple[str, int, int, int, Plugins]]:
     texts = {t.point.hash: t.point.mission.model_dump_json() for t in tasks}
-    return [(texts[t.point.hash], t.store.seed, t.runs.start, t.runs.stop) for t in tasks]
+    plugins = plugins_in_code()
+    return [(texts[t.point.hash], t.store.seed, t.runs.start, t.runs.stop, plugins)
+            for t in tasks]
 
 
 def _exit_with(parent: int) -> None:
@@ -262,6 +267,9 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
     """
     _check(workers, scheduler, dask_local)
     with ExitStack() as stack:
+        for experiment, _ in jobs:  # planners and radio models by name, before any work
+            for _, mission in experiment.points():
+                check_mission(mission)
         stores = [stack.enter_context(storage.open_store(out_dir, experiment))
                   for experiment, out_dir in jobs]
         tasks = [task for store, (experiment, _) in zip(stores, jobs, strict=True)

@@ -6,12 +6,42 @@ The engine knows rules and routes, not planners; this layer resolves the mission
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 from sarlink.config import Mission
-from sarlink.engine import Prepared, Scenario
-from sarlink.planners import get_planner
+from sarlink.engine import Prepared, RadioModel, Scenario, get_radio, register_radio
+from sarlink.engine.radios import radios_in_code
+from sarlink.planners import Planner, get_planner
+from sarlink.planners.registry import adopt, registered_in_code
 from sarlink.result import RunResult
 
-__all__ = ["prepare", "simulate"]
+__all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prepare", "simulate"]
+
+
+class Plugins(NamedTuple):
+    """The plug-ins registered in code in this process, to register in worker processes."""
+
+    planners: tuple[Planner, ...]
+    radios: tuple[RadioModel, ...]
+
+
+def plugins_in_code() -> Plugins:
+    """What :func:`sarlink.register_planner` and :func:`sarlink.register_radio` added here."""
+    return Plugins(registered_in_code(), radios_in_code())
+
+
+def adopt_plugins(plugins: Plugins) -> None:
+    """Register, in a worker process, the plug-ins its caller registered in code."""
+    adopt(plugins.planners)
+    for radio in plugins.radios:
+        register_radio(radio)
+
+
+def check_mission(mission: Mission) -> None:
+    """Raise a :class:`~sarlink.ConfigError` unless the mission's planner and radio model are
+    known: what cannot be checked before plug-ins are loaded, checked where work starts."""
+    get_planner(mission.team.planner)
+    get_radio(mission.radio)
 
 
 def prepare(mission: Mission) -> Prepared:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -56,7 +57,7 @@ def _same(a: RunResult, b: RunResult) -> bool:
 
 
 def check_planner(name: str, *, drones: Sequence[int] = (1, 4, 10), runs: int = 2,
-                  horizon: float = 1500.0, seed: int = 7, **params: object) -> None:
+                  horizon: float = 1500.0, seed: int = 7, **params: Any) -> None:
     """Fly the registered planner ``name`` and check the contract (module docstring).
 
     ``params`` are further flat mission parameters (``rc=500.0``, ``on_detect="report"``).

@@ -11,7 +11,8 @@ from sarlink.entrypoints import discover
 from sarlink.planners.base import Planner
 from sarlink.planners.paper import PAPER
 
-__all__ = ["Entry", "get_planner", "planner_entries", "planner_names", "register_planner"]
+__all__ = ["Entry", "adopt", "get_planner", "planner_entries", "planner_names",
+           "register_planner", "registered_in_code"]
 
 
 @dataclass(frozen=True)
@@ -71,6 +72,21 @@ def register_planner(planner: Planner, *, replace: bool = False) -> Planner:
             break
     _ENTRIES[planner.name] = Entry(planner, f"code ({module})")
     return planner
+
+
+def registered_in_code() -> tuple[Planner, ...]:
+    """The planners registered in this process by :func:`register_planner`: what worker
+    processes must register too (they import neither the caller's script nor its tests)."""
+    return tuple(e.planner for e in _ENTRIES.values() if e.origin.startswith("code ("))
+
+
+def adopt(planners: tuple[Planner, ...]) -> None:
+    """Register, in a worker process, the planners its parent registered in code."""
+    for planner in planners:
+        if _ENTRIES.get(planner.name, Entry(planner, "")).planner != planner:
+            raise ConfigError(f"planner name {planner.name!r} means another planner in the "
+                              "worker process than in the caller")
+        register_planner(planner)
 
 
 def planner_entries() -> dict[str, Entry]:

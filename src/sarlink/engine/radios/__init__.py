@@ -56,6 +56,12 @@ def register_radio(model: RadioModel, *, origin: str | None = None) -> RadioMode
     return model
 
 
+def radios_in_code() -> tuple[RadioModel, ...]:
+    """The radio models registered in this process by :func:`register_radio`."""
+    return tuple(_REGISTRY.models[name] for name, origin in _REGISTRY.origins.items()
+                 if origin.startswith("code ("))
+
+
 def radio_names() -> list[str]:
     """Every radio model's name."""
     _REGISTRY.load()

@@ -1,0 +1,53 @@
+"""Radio models written outside sarlink, with effects a test can predict.
+
+``CUT`` is the disc with every link to the BS cut: nobody ever reaches the BS. ``HALF`` and
+``FULL`` are the disc whose nominal range (what ConB predicts with) is its parameter times
+r_c: ``FULL`` is the disc itself.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+
+import numpy as np
+from numba import njit
+
+from sarlink import Mission, Params, RadioModel
+
+
+@njit
+def disc(p: Params, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
+    thr2 = np.zeros((m, mp))
+    thr2[:, :m] = p.rc * p.rc
+    return thr2
+
+
+@njit
+def cut(p: Params, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
+    thr2 = disc(p, rp, m, mp)
+    bs = m - 2
+    thr2[bs, :] = -1.0  # no squared distance is at most -1
+    thr2[:, bs] = -1.0
+    return thr2
+
+
+@njit
+def steady(thr2: np.ndarray, p: Params, rp: np.ndarray, k: int,
+           rng: np.random.Generator) -> None:
+    pass
+
+
+@njit
+def scaled(p: Params, rp: np.ndarray) -> float:
+    return p.rc * rp[0]
+
+
+def factor(value: float, mission: Mission) -> list[float]:
+    """The radio's parameters: the nominal range's factor (a module-level function, so that
+    the model can be sent to worker processes)."""
+    return [value]
+
+
+CUT = RadioModel("cut-bs", cut, steady, scaled, static=True, params=partial(factor, 1.0))
+HALF = RadioModel("half-nominal", disc, steady, scaled, static=True, params=partial(factor, 0.5))
+FULL = RadioModel("full-nominal", disc, steady, scaled, static=True, params=partial(factor, 1.0))
