@@ -7,6 +7,7 @@ import typer
 from sarlink.cli.design import design
 from sarlink.cli.errors import Guarded
 from sarlink.cli.plan import plan
+from sarlink.cli.planners import planners
 from sarlink.cli.replay import replay
 from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
@@ -28,6 +29,7 @@ app.command()(summarize)
 app.command()(reproduce)
 app.command()(replay)
 app.command()(design)
+app.command()(planners)
 
 
 @app.callback()
