@@ -112,6 +112,9 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
                        r"\(entry point broken\): ModuleNotFoundError"):
         get_planner("nope")
     assert simulate(Mission.build(planner="covb-again", radio="cut-bs")).t_notify is None
+    from sarlink.cli.planners import listing
+
+    assert [b["entry_point"] for b in listing()["broken"]] == ["broken"]
 
 
 # -- bad plug-ins: one line naming the plug-in and what is wrong ------------------------------

@@ -8,8 +8,9 @@ import typer
 from rich.table import Table
 
 from sarlink.cli.common import console, print_json, user_errors
-from sarlink.engine.radios import get_radio, radio_names, radio_origin
+from sarlink.engine.radios import broken_radios, get_radio, radio_names, radio_origin
 from sarlink.planners import PAPER_PLANNERS, planner_entries
+from sarlink.planners.registry import broken_plugins
 
 
 def listing() -> dict[str, Any]:
@@ -20,7 +21,9 @@ def listing() -> dict[str, Any]:
                 for name, e in planner_entries().items()]
     radios = [{"name": name, "origin": radio_origin(name), "static": get_radio(name).static}
               for name in radio_names()]
-    return {"planners": planners, "radios": radios}
+    broken = [{"entry_point": name, "error": why}
+              for name, why in {**broken_plugins(), **broken_radios()}.items()]
+    return {"planners": planners, "radios": radios, "broken": broken}
 
 
 def planners(
@@ -40,3 +43,5 @@ def planners(
     for r in data["radios"]:
         radios.add_row(r["name"], r["origin"])
     console.print(radios)
+    for b in data["broken"]:
+        console.print(f"[red]plug-in {b['entry_point']} failed to load[/]: {b['error']}")

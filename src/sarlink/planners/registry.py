@@ -11,7 +11,7 @@ from sarlink.entrypoints import discover
 from sarlink.planners.base import Planner
 from sarlink.planners.paper import PAPER
 
-__all__ = ["Entry", "adopt", "get_planner", "planner_entries", "planner_names",
+__all__ = ["Entry", "adopt", "broken_plugins", "get_planner", "planner_entries", "planner_names",
            "register_planner", "registered_in_code"]
 
 
@@ -87,6 +87,12 @@ def adopt(planners: tuple[Planner, ...]) -> None:
             raise ConfigError(f"planner name {planner.name!r} means another planner in the "
                               "worker process than in the caller")
         register_planner(planner)
+
+
+def broken_plugins() -> dict[str, str]:
+    """The entry points of ``sarlink.planners`` that failed to load, with why."""
+    _load_plugins()
+    return dict(_BROKEN)
 
 
 def planner_entries() -> dict[str, Entry]:

@@ -8,7 +8,8 @@ from sarlink.engine.hooks import RadioModel, python_function
 from sarlink.engine.radios import disc, shadowing
 from sarlink.entrypoints import discover
 
-__all__ = ["DISC", "SHADOWING", "get_radio", "radio_names", "radio_origin", "register_radio"]
+__all__ = ["DISC", "SHADOWING", "broken_radios", "get_radio", "radio_names", "radio_origin",
+           "radios_in_code", "register_radio"]
 
 DISC = RadioModel("disc", disc.init, disc.update, disc.nominal, static=True)
 """Eq. 4: linked within r_c."""
@@ -60,6 +61,12 @@ def radios_in_code() -> tuple[RadioModel, ...]:
     """The radio models registered in this process by :func:`register_radio`."""
     return tuple(_REGISTRY.models[name] for name, origin in _REGISTRY.origins.items()
                  if origin.startswith("code ("))
+
+
+def broken_radios() -> dict[str, str]:
+    """The entry points of ``sarlink.radios`` that failed to load, with why."""
+    _REGISTRY.load()
+    return dict(_REGISTRY.broken)
 
 
 def radio_names() -> list[str]:
