@@ -8,16 +8,18 @@ from sarlink.planners.concov import ConCov
 from sarlink.planners.covb import CovB
 from sarlink.planners.mtsp import Mtsp
 from sarlink.planners.mtsp_conb import MtspConB
+from sarlink.planners.patterns import PATTERNS
 
 __all__ = ["PLANNERS", "Planner", "Steering", "get_planner", "planner_names"]
 
-PLANNERS: dict[str, Planner] = {p.name: p for p in (Mtsp(), CovB(), ConB(), MtspConB(), ConCov())}
-"""Every planner by name, in the order of the paper's legends; figures and reproductions draw
-every registered planner in this order."""
+PLANNERS: dict[str, Planner] = {
+    p.name: p for p in (Mtsp(), CovB(), ConB(), MtspConB(), ConCov(), *PATTERNS)}
+"""Every planner by name: the paper's, in the order of its legends, then the IAMSAR search
+patterns; figures draw planners in this order."""
 
 
 def planner_names() -> list[str]:
-    """Names of the registered planners, in registration order (the paper's legend order)."""
+    """Names of the registered planners, in registration order (the paper's first)."""
     return list(PLANNERS)
 
 
