@@ -14,7 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Rect", "close_at", "fit_budget", "flight_length", "polyline_arc"]
+__all__ = ["Point", "Rect", "close_at", "fit_budget", "flight_length", "polyline_arc"]
+
+Point = Sequence[float] | np.ndarray
+"""A point ``(x, y)``, m."""
 
 
 @dataclass(frozen=True)
@@ -57,7 +60,7 @@ class Rect:
         return ((p[:, 0] >= self.x0 - tol) & (p[:, 0] <= self.x1 + tol)
                 & (p[:, 1] >= self.y0 - tol) & (p[:, 1] <= self.y1 + tol))
 
-    def view(self, origin: Sequence[float]) -> tuple[float, float]:
+    def view(self, origin: Point) -> tuple[float, float]:
         """The directions from ``origin`` into the rectangle, as the first angle and the
         counter-clockwise sweep from it (radians): the whole circle from inside, half of it
         from an edge, a quarter from a corner."""
@@ -71,7 +74,7 @@ class Rect:
         k = int(np.argmax(gaps))
         return float(angles[(k + 1) % len(angles)]), float(2 * math.pi - gaps[k])
 
-    def exit(self, origin: Sequence[float], angle: float) -> np.ndarray:
+    def exit(self, origin: Point, angle: float) -> np.ndarray:
         """Where the ray from ``origin`` (inside) at ``angle`` (radians) leaves the rectangle."""
         ox, oy = float(origin[0]), float(origin[1])
         dx, dy = math.cos(angle), math.sin(angle)
@@ -89,23 +92,24 @@ def _legs(path: np.ndarray) -> np.ndarray:
     return np.hypot(*np.diff(path, axis=0).T) if len(path) > 1 else np.zeros(0)
 
 
-def flight_length(bs: Sequence[float], route: np.ndarray) -> float:
+def flight_length(bs: Point, route: np.ndarray) -> float:
     """Metres flown from take-off at ``bs`` along ``route``."""
     return float(_legs(np.vstack([bs, np.asarray(route).reshape(-1, 2)])).sum())
 
 
-def close_at(bs: Sequence[float], pieces: Sequence[np.ndarray]) -> np.ndarray:
+def close_at(bs: Point, pieces: Sequence[np.ndarray]) -> np.ndarray:
     """A route from take-off at ``bs`` through ``pieces`` in order and back to ``bs``: their
-    waypoints joined, with a waypoint equal to the one before it dropped."""
+    waypoints joined, a waypoint within a nanometre of the one before it dropped."""
     path = np.vstack([np.reshape(bs, (1, 2)), *(np.reshape(p, (-1, 2)) for p in pieces),
                       np.reshape(bs, (1, 2))]).astype(float)
     keep = np.ones(len(path), dtype=bool)
     keep[1:] = (np.abs(np.diff(path, axis=0)) > 1e-9).any(axis=1)
-    route = path[keep][1:]
-    return route if len(route) else path[-1:]
+    route = path[keep][1:] if keep[1:].any() else path[-1:]
+    route[-1] = path[-1]  # the BS itself, not a point a rounding error away
+    return route
 
 
-def fit_budget(bs: Sequence[float], route: np.ndarray, budget: float) -> np.ndarray:
+def fit_budget(bs: Point, route: np.ndarray, budget: float) -> np.ndarray:
     """``route`` cut where the drone must turn home to land at ``bs`` within ``budget`` metres.
 
     Flown ``s`` metres along the path, a drone needs ``s + |p(s) - bs|`` metres to land; that
