@@ -31,6 +31,7 @@ from sarlink.paper.experiments import (
     DRONES,
     EXPERIMENTS,
     P_MISS,
+    PAPER_PLANNERS,
     RANGES,
     TD_FIG3,
     TD_LONG,
@@ -39,6 +40,10 @@ from sarlink.paper.experiments import (
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, Settings
 from sarlink.planners import PLANNERS, Steering, get_planner, planner_names
+from sarlink.planners.patterns import PATTERNS
+
+PAPER = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
+"""The paper's planners, in the order of its legends (Section 4)."""
 
 # -- the end-to-end run --------------------------------------------------------------------------
 
@@ -52,17 +57,19 @@ def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     out = quick.out
-    for n in range(1, 9):  # the paper's seven and Fig. 8, beyond the paper
+    for n in range(1, 10):  # the paper's seven, Figs. 8 and 9 beyond the paper
         for ext in ("png", "svg"):
             path = out / "figures" / f"fig{n}.{ext}"
             assert path.stat().st_size > 10_000, path
-    assert sorted(quick.figures) == list(range(1, 9))
+    assert sorted(quick.figures) == list(range(1, 10))
     assert quick.report_md == out / "report.md"
     page = quick.report_html.read_text()
-    assert page.count("data:image/png;base64,") == 8
+    assert page.count("data:image/png;base64,") == 9
     assert "Beyond the paper: drones that go and tell" in page
+    assert "Beyond the paper: the search patterns SAR teams fly" in page
     assert not re.search(r"""(src|href)=["']?(https?:|//|figures/)""", page)  # self-contained
-    for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve"):
+    for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve",
+                 "others"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
 
@@ -73,7 +80,7 @@ def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: Reproductio
     data = re.search(r'id="sarlink-data">(.*?)</script>', quick.replay.read_text(), re.S)
     assert data is not None
     panels = json.loads(data.group(1))["panels"]
-    assert sorted(p["planner"] for p in panels) == sorted(PLANNERS)
+    assert sorted(p["planner"] for p in panels) == sorted(PAPER)
     assert all(p["rc"] == 500.0 and p["tNotify"] is not None for p in panels)
     assert "(replay-rc500.html)" in quick.report_md.read_text()
     assert 'href="replay-rc500.html"' in quick.report_html.read_text()
@@ -82,7 +89,7 @@ def test_the_report_links_a_replay_of_every_planner_at_rc_500(quick: Reproductio
 def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
         quick: ReproductionResult) -> None:
     runs = load_runs(quick.out, "main")
-    assert len(runs) == 10 * len(PLANNERS) * len(DRONES) * len(RANGES)
+    assert len(runs) == 10 * len(PAPER) * len(DRONES) * len(RANGES)
     recomputed = summarize(runs, td=[1000.0, 2000.0, 4000.0], by=["planner", "drones", "rc"])
     stored = pd.read_csv(quick.out / "tables" / "main.csv")
     cols = ["P_s", "P_s_lo", "immediate", "mission_time", "mission_time_se", "reachability"]
@@ -109,7 +116,7 @@ def test_report_numbers_equal_those_recomputed_from_the_stored_runs(
               "ConCov": "concov"}
 
     fig3 = _report_table(md, "### Figure 3")
-    assert len(fig3) == len(PLANNERS) * len(DRONES) * len(RANGES)
+    assert len(fig3) == len(PAPER) * len(DRONES) * len(RANGES)
     for rc, label, n, cell in fig3:
         row = main[(main["planner"] == labels[label]) & (main["drones"] == int(n))
                    & (main["rc"] == float(rc)) & (main["td"] == 2000.0)].iloc[0]
@@ -193,7 +200,6 @@ def test_api_rejects_unknown_figures(tmp_path: Path) -> None:
 Rule = Callable[[str, int, float, float], float]
 """A made-up value of a measure at (planner, N_m, r_c, t_d)."""
 
-PAPER = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
 SD = {"mission_time": 600.0, "search_share": 0.2, "reachability": 0.2}
 """Standard deviations of a run's value of each mean, for plausible standard errors."""
 
@@ -528,20 +534,25 @@ class Made:
     name: str = "made-up"
     label: str = "MadeUp"
     colour: str = "#123456"
-    marker: str = "P"
+    marker: str = "h"
 
     def steering(self, mission: Mission) -> Steering:
         return get_planner("covb").steering(mission)
 
 
-def test_a_registered_planner_joins_the_experiments_and_the_figures(
+def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the_paper(
         monkeypatch: pytest.MonkeyPatch) -> None:
+    assert PAPER_PLANNERS == PAPER
     monkeypatch.setitem(PLANNERS, "made-up", Made())
     assert planner_names()[-1] == "made-up"
     for exp in EXPERIMENTS.values():
         experiment = exp.build(10)
-        assert experiment.grid["planner"] == planner_names()
-        assert "made-up" in {mission.team.planner for _, mission in experiment.points()}
+        flown = {mission.team.planner for _, mission in experiment.points()}
+        if exp.name == "others":
+            assert flown == {p.name for p in PATTERNS} | {"made-up"}
+            assert experiment.grid["on_detect"] == ["continue", "report"]
+        else:
+            assert flown == set(PAPER)
 
     table = pd.concat([made_up(), made_up().query("planner == 'covb'").assign(planner="made-up")])
     fig = fig3(table)
@@ -549,9 +560,29 @@ def test_a_registered_planner_joins_the_experiments_and_the_figures(
     assert [t.get_text() for t in legend.get_texts()][-1] == "MadeUp"
     drawn = [line for ax in fig.axes for line in ax.get_lines() if line.get_label() == "MadeUp"]
     assert len(drawn) == len(RANGES)
-    assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "P")}
+    assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "h")}
     (_, values), = FIGURES[3].values(table)
     assert (values["planner"] == "MadeUp").sum() == len(DRONES) * len(RANGES)
+
+
+def test_fig9_draws_the_other_planners_solid_beside_the_paper_planners_dashed() -> None:
+    paper = made_up()
+    others = pd.concat([made_up().query("planner == 'covb'").assign(planner=p.name,
+                                                                     on_detect=mode)
+                        for p in PATTERNS for mode in ("continue", "report")])
+    fig = FIGURES[9].draw(paper, paper, others)
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == [p.label for p in PATTERNS] + [get_planner(p).label for p in PAPER]
+    for pattern in PATTERNS:
+        lines = [line for ax in fig.axes for line in ax.get_lines()
+                 if line.get_color() == pattern.colour]
+        assert len(lines) == 2 * len(RANGES)  # both ways, every range
+        assert {(line.get_marker(), line.get_linestyle()) for line in lines} == {
+            (pattern.marker, "-")}
+    dashed = [line for ax in fig.axes for line in ax.get_lines() if line.get_linestyle() == "--"]
+    assert len(dashed) == len(PAPER) * 2 * len(RANGES)
+    (_, values), = FIGURES[9].values(paper, paper, others)
+    assert len(values) == (len(PAPER) + len(PATTERNS)) * 2 * len(RANGES) * len(DRONES) * 2
 
 
 def test_a_point_without_notified_runs_leaves_a_claim_undecided() -> None:

@@ -45,6 +45,7 @@ from sarlink.paper.experiments import (
     FIG2_DRONES,
     FIG5_RANGES,
     P_MISS,
+    PAPER_PLANNERS,
     RANGES,
     TD_FIG3,
     TD_LONG,
@@ -54,8 +55,6 @@ from sarlink.planners import get_planner
 
 __all__ = ["CLAIMS", "DEFAULT_SETTINGS", "Claim", "Finding", "Settings", "check_all", "tally"]
 
-PAPER_PLANNERS = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
-"""The schemes the paper's claims are about."""
 NEAR_ONE = 0.9
 """A probability whose interval lies above this is "near 1" (the paper's "higher than 90%")."""
 ABOUT = 0.1
