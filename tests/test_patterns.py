@@ -326,3 +326,33 @@ def test_replay_draws_the_patterns_tours(tmp_path) -> None:
         mission = Mission.build(planner=panel["planner"], drones=4, rc=500.0)
         routes = get_planner(panel["planner"]).steering(mission).routes
         assert panel["tours"] == [[list(mission.area.bs_xy), *r.tolist()] for r in routes]
+
+
+# -- in a design ----------------------------------------------------------------------------
+
+
+def test_design_considers_the_patterns_and_meets_where_parallel_track_must_find(
+        tmp_path) -> None:
+    """With one hop to the BS from anywhere (r_c beyond the area's diagonal) success is
+    detection, and a parallel track team whose every route ends within t_d detects every
+    target: that team meets any P_s below 1, so the smallest team found is no larger."""
+    from sarlink.sizing import DesignRequest, design
+
+    base = Mission.build(size=2000.0, rc=2900.0, r=250.0)
+    assert {p.name for p in PATTERNS} <= set(DesignRequest(td=500.0, ps=0.5).planners)
+    td = 700.0
+
+    def longest(n: int) -> float:
+        routes = get_planner("parallel").steering(base.replace(drones=n)).routes
+        return max(flight_length(base.area.bs_xy, r) for r in routes) / base.team.speed
+
+    finishing = next(n for n in range(1, 9) if longest(n) <= td)
+    request = DesignRequest(mission=base, td=td, ps=0.9, planners=("parallel",),
+                            max_drones=8, options={"on_detect": ["continue"]})
+    answer = design(request, tmp_path, progress=False)
+    (planner,) = answer.planners
+    assert planner.smallest is not None and planner.smallest <= finishing
+    team = base.replace(planner="parallel", drones=finishing, horizon=td, stop="notified")
+    for run in range(40):
+        result = simulate(team, seed=2024, run=run)
+        assert result.t_notify is not None and result.t_notify == result.t_detect
