@@ -18,7 +18,7 @@ import pytest
 from typer.testing import CliRunner
 
 import sarlink.storage as storage
-from sarlink import Experiment, load
+from sarlink import Experiment, load, planner_names
 from sarlink.cli import app
 from sarlink.storage import MANIFEST, open_store
 
@@ -110,7 +110,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     (["simulate", "--look", "sometimes"], ["--look (sensing.look)", "'per-pass'"]),
     (["simulate", "--stop", "never"], ["--stop (timing.stop)", "'horizon'"]),
     (["simulate", "--planner", "astar"], ["--planner (team.planner)",
-                                          "mtsp, covb, conb, mtsp-conb, concov"]),
+                                          ", ".join(planner_names())]),
     (["simulate", "--nr", "0"], ["--nr (team.nr)", "greater than or equal to 1"]),
     (["simulate", "--r", "0"], ["--r (sensing.r)", "greater than 0"]),
     (["simulate", "--seed", "-1"], ["'--seed'", "greater than or equal to 0"]),
@@ -200,7 +200,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     (["summarize", "{d}/empty", "--td", "-5"], ["--td", "> 0", "got -5"]),
     (["summarize", "{d}/empty", "--td", "nan"], ["--td", "finite"]),
     # -- reproduce and the app ---------------------------------------------------------------
-    (["reproduce", "--figures", "9", "--out", "{d}/r"], ["figures must be among 1, 2"]),
+    (["reproduce", "--figures", "10", "--out", "{d}/r"], ["figures must be among 1, 2"]),
     (["reproduce", "--figures", "one", "--out", "{d}/r"], ["--figures", "like 1,3,7"]),
     (["reproduce", "--runs", "0", "--out", "{d}/r"], ["runs must be at least 1"]),
     (["reproduce", "--out", "{d}/afile"], ["--out", "afile is a file"]),

@@ -39,7 +39,8 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, Settings
-from sarlink.planners import PAPER_PLANNERS, RulePlanner, planner_names, registry
+from sarlink.planners import PAPER_PLANNERS, RulePlanner, get_planner, planner_names, registry
+from sarlink.planners.patterns import PATTERNS
 
 # -- the end-to-end run --------------------------------------------------------------------------
 
@@ -53,17 +54,19 @@ def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     out = quick.out
-    for n in range(1, 9):  # the paper's seven and Fig. 8, beyond the paper
+    for n in range(1, 10):  # the paper's seven, Figs. 8 and 9 beyond the paper
         for ext in ("png", "svg"):
             path = out / "figures" / f"fig{n}.{ext}"
             assert path.stat().st_size > 10_000, path
-    assert sorted(quick.figures) == list(range(1, 9))
+    assert sorted(quick.figures) == list(range(1, 10))
     assert quick.report_md == out / "report.md"
     page = quick.report_html.read_text()
-    assert page.count("data:image/png;base64,") == 8
+    assert page.count("data:image/png;base64,") == 9
     assert "Beyond the paper: drones that go and tell" in page
+    assert "Beyond the paper: the search patterns SAR teams fly" in page
     assert not re.search(r"""(src|href)=["']?(https?:|//|figures/)""", page)  # self-contained
-    for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve"):
+    for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve",
+                 "others"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
 
@@ -172,7 +175,7 @@ def test_cli_reports_where_the_report_is(tmp_path: Path, monkeypatch: pytest.Mon
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--figures", "1,9"], "figures must be among"),
+    (["--figures", "1,10"], "figures must be among"),
     (["--figures", "one"], "--figures takes figure numbers"),
     (["--runs", "0"], "runs must be at least 1"),
 ])
@@ -194,7 +197,6 @@ def test_api_rejects_unknown_figures(tmp_path: Path) -> None:
 Rule = Callable[[str, int, float, float], float]
 """A made-up value of a measure at (planner, N_m, r_c, t_d)."""
 
-PAPER = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
 SD = {"mission_time": 600.0, "search_share": 0.2, "reachability": 0.2}
 """Standard deviations of a run's value of each mean, for plausible standard errors."""
 
@@ -225,21 +227,24 @@ def made_up(runs: int = 2000, **rules: Rule) -> pd.DataFrame:
     rules = {"P_s": lambda *_: 0.5, "immediate": lambda *_: 0.5,
              "mission_time": lambda *_: 1000.0, "search_share": lambda *_: 0.7,
              "reachability": lambda *_: 0.3} | rules
-    grid = pd.DataFrame(list(itertools.product(PAPER, DRONES, RANGES, (1000.0, 2000.0, 4000.0))),
+    grid = pd.DataFrame(list(itertools.product(PAPER_PLANNERS, DRONES, RANGES,
+                                               (1000.0, 2000.0, 4000.0))),
                         columns=["planner", "drones", "rc", "td"])
     return _estimates(grid, rules, runs)
 
 
 def made_up_shadowing(immediate: Rule) -> pd.DataFrame:
     """Fig. 7b's table at r_c = 1000 m."""
-    grid = pd.DataFrame(list(itertools.product(PAPER, DRONES)), columns=["planner", "drones"])
+    grid = pd.DataFrame(list(itertools.product(PAPER_PLANNERS, DRONES)),
+                        columns=["planner", "drones"])
     return _estimates(grid.assign(rc=1000.0, sigma=3.0, td=TD_LONG), {"immediate": immediate},
                       2000)
 
 
 def made_up_miss(P_d: Callable[[str, float], float]) -> pd.DataFrame:
     """Fig. 7a's table: P_d per planner and miss probability."""
-    grid = pd.DataFrame(list(itertools.product(PAPER, P_MISS)), columns=["planner", "p_miss"])
+    grid = pd.DataFrame(list(itertools.product(PAPER_PLANNERS, P_MISS)),
+                        columns=["planner", "p_miss"])
     table = _estimates(grid.assign(td=grid["p_miss"]),  # the rule reads p_miss as its t_d
                        {"P_d": lambda p, n, rc, q: P_d(p, q)}, 2000)
     return table.assign(td=1000.0)
@@ -522,16 +527,24 @@ def test_difference_interval_is_newcombes() -> None:
 # -- the paper layer follows the planner registry ----------------------------------------------
 
 
-MADE_UP = RulePlanner("made-up", "MadeUp", COVB, colour="#123456", marker="P")
+MADE_UP = RulePlanner("made-up", "MadeUp", COVB, colour="#123456", marker="h")
 """A made-up planner: CovB's rule under another name, colour and marker."""
 
 
-def test_the_paper_keeps_its_planners_and_draws_a_registered_one_in_its_style(
+def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the_paper(
         monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setitem(registry._ENTRIES, "made-up", registry.Entry(MADE_UP, "test"))
     assert planner_names()[-1] == "made-up"
+    others = set(planner_names()) - set(PAPER_PLANNERS)
+    assert {p.name for p in PATTERNS} | {"made-up"} <= others
     for exp in EXPERIMENTS.values():
-        assert exp.build(10).grid["planner"] == list(PAPER_PLANNERS)
+        experiment = exp.build(10)
+        flown = {mission.team.planner for _, mission in experiment.points()}
+        if exp.name == "others":
+            assert flown == others
+            assert experiment.grid["on_detect"] == ["continue", "report"]
+        else:
+            assert flown == set(PAPER_PLANNERS)
 
     table = pd.concat([made_up(), made_up().query("planner == 'covb'").assign(planner="made-up")])
     fig = fig3(table)
@@ -539,9 +552,29 @@ def test_the_paper_keeps_its_planners_and_draws_a_registered_one_in_its_style(
     assert [t.get_text() for t in legend.get_texts()][-1] == "MadeUp"
     drawn = [line for ax in fig.axes for line in ax.get_lines() if line.get_label() == "MadeUp"]
     assert len(drawn) == len(RANGES)
-    assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "P")}
+    assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "h")}
     (_, values), = FIGURES[3].values(table)
     assert (values["planner"] == "MadeUp").sum() == len(DRONES) * len(RANGES)
+
+
+def test_fig9_draws_the_other_planners_solid_beside_the_paper_planners_dashed() -> None:
+    paper = made_up()
+    others = pd.concat([made_up().query("planner == 'covb'").assign(planner=p.name,
+                                                                     on_detect=mode)
+                        for p in PATTERNS for mode in ("continue", "report")])
+    fig = FIGURES[9].draw(paper, paper, others)
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == [p.label for p in PATTERNS] + [get_planner(p).label for p in PAPER_PLANNERS]
+    for pattern in PATTERNS:
+        lines = [line for ax in fig.axes for line in ax.get_lines()
+                 if line.get_color() == pattern.colour]
+        assert len(lines) == 2 * len(RANGES)  # both ways, every range
+        assert {(line.get_marker(), line.get_linestyle()) for line in lines} == {
+            (pattern.marker, "-")}
+    dashed = [line for ax in fig.axes for line in ax.get_lines() if line.get_linestyle() == "--"]
+    assert len(dashed) == len(PAPER_PLANNERS) * 2 * len(RANGES)
+    (_, values), = FIGURES[9].values(paper, paper, others)
+    assert len(values) == (len(PAPER_PLANNERS) + len(PATTERNS)) * 2 * len(RANGES) * len(DRONES) * 2
 
 
 def test_a_point_without_notified_runs_leaves_a_claim_undecided() -> None:

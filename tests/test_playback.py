@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 import sarlink
-from sarlink import Mission, Trajectory, simulate
+from sarlink import Mission, Trajectory, planner_names, simulate
 from sarlink.cli import app
 from sarlink.engine.codes import Mode
 from sarlink.playback import compare, replay
@@ -168,7 +168,7 @@ def test_cli_simulate_writes_a_replay(tmp_path) -> None:
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--planners", "covb,foo"], "planners must be among mtsp, covb, conb, mtsp-conb, concov; "
+    (["--planners", "covb,foo"], f"planners must be among {', '.join(planner_names())}; "
                                  "got 'foo'"),
     (["--planners", ","], "got none"),
     (["--rc", "-5"], "channel.rc"),

@@ -30,8 +30,9 @@ def reproduce(
     out: Annotated[Path, typer.Option(
         "--out", "-o", help="output folder, created or resumed")] = Path("reproduction"),
     figures: Annotated[str | None, typer.Option(
-        help="figures to reproduce, e.g. 1,3,7 (the paper's 1-7; 8: beyond the paper, drones "
-             "that fly to tell the BS); default all")] = None,
+        help="figures to reproduce, e.g. 1,3,7 (the paper's 1-7; beyond the paper, 8: drones "
+             "that fly to tell the BS, 9: the other planners, such as the IAMSAR search "
+             "patterns); default all")] = None,
     workers: Annotated[int | None, typer.Option(
         help="local worker processes; default one per core", min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(

@@ -6,9 +6,11 @@ serves them all and their numbers agree with each other. Fig. 7a (imperfect sens
 Fig. 7b (shadowing) change the mission itself and need sweeps of their own; they plot only
 detection (7a) or notification (7b), so their runs stop at that event, which makes them
 several times faster. Fig. 1 times the planners rather than simulating missions. Every
-experiment uses the one seed :data:`SEED`. The planners are the paper's five
-(:data:`sarlink.planners.PAPER_PLANNERS`); other planners, built-in or plug-in, are compared
-with them beyond the paper.
+experiment uses the one seed :data:`SEED`. The paper's figures fly the paper's five planners
+(:data:`PAPER_PLANNERS`); every other registered planner (:func:`sarlink.planner_names`: the
+IAMSAR search patterns, and any planner registered since) is flown over the main grid, with and
+without drones that report, by the ``beyond`` experiment, read when it is built, so that a newly
+registered planner is compared with the paper's without edits here.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ import pandas as pd
 
 from sarlink.config import Experiment, Mission
 from sarlink.metrics import success_curve, summarize
-from sarlink.planners import PAPER_PLANNERS
+from sarlink.planners import PAPER_PLANNERS, planner_names
 
 __all__ = [
     "BEYOND",
@@ -31,6 +33,8 @@ __all__ = [
     "EXPERIMENTS",
     "FIG2_DRONES",
     "FIG5_RANGES",
+    "OTHERS",
+    "PAPER_PLANNERS",
     "PLAN_TIME_PLANNERS",
     "P_MISS",
     "QUICK_RUNS",
@@ -42,6 +46,7 @@ __all__ = [
     "TD_LONG",
     "TD_SHORT",
     "PaperExperiment",
+    "other_planners",
     "plan_time_missions",
 ]
 
@@ -75,6 +80,7 @@ P_MISS = tuple(round(0.1 * k, 1) for k in range(10))
 """Miss probabilities of Fig. 7a."""
 SIGMA = 3.0
 """Shadowing standard deviation of Fig. 7b, dB (the paper's, after Yang et al.)."""
+"""The paper's planners, in the order of its legends: the planners of its figures and claims."""
 PLAN_TIME_PLANNERS = ("mtsp", "covb", "conb")
 """The native planners whose plan computation time Fig. 1 compares."""
 
@@ -145,18 +151,41 @@ def _report_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
             "report_curve": success_curve(runs, CURVE_TDS, by=_BY)}
 
 
+def other_planners() -> list[str]:
+    """Every registered planner that is not the paper's, in registration order."""
+    return [p for p in planner_names() if p not in PAPER_PLANNERS]
+
+
+def _others(runs: int) -> Experiment:
+    """Beyond the paper: every other planner over the main grid, with and without drones
+    that report, beside the paper's planners (the main and report sweeps)."""
+    return Experiment(
+        name="Beyond: other planners", seed=SEED, runs=runs,
+        mission=Mission.build(horizon=TD_LONG),
+        grid={"planner": other_planners(), "drones": list(DRONES), "rc": list(RANGES),
+              "on_detect": ["continue", "report"]},
+    )
+
+
+def _others_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"others": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=[*_BY, "on_detect"])}
+
+
 BEYOND = 8
 """The number of the figure beyond the paper's seven: its planners with drones that report."""
+OTHERS = 9
+"""The number of the figure of the other planners (the search patterns) beside the paper's."""
 
 EXPERIMENTS = {e.name: e for e in (
-    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND), _main, _main_tables),
+    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS), _main, _main_tables),
     PaperExperiment("miss", (7,), _miss, _miss_tables),
     PaperExperiment("shadowing", (7,), _shadowing, _shadowing_tables),
-    PaperExperiment("report", (BEYOND,), _report, _report_tables),
+    PaperExperiment("report", (BEYOND, OTHERS), _report, _report_tables),
+    PaperExperiment("others", (OTHERS,), _others, _others_tables),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`) and ``curve`` (``success_curve`` at
-:data:`CURVE_TDS`)."""
+:data:`CURVE_TDS`); ``others`` the table ``others``, by ``on_detect`` too."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:

@@ -5,8 +5,8 @@ empty figure to draw into) and returns the figure, laid out like the paper's: on
 communication range where the paper splits them, Fig. 2 with a row per team size. Every
 probability is drawn with its 95% Wilson interval as a band, every mean with a band of ± one
 standard error. Every planner of the tables is drawn, in the registry's order (the paper's
-legend order) with the colour, marker and label it is registered with, so a new planner needs
-no edits here. :data:`FIGURES` lists them with their captions, the tables they
+legend order, then the others) with the colour, marker and label it is registered with, so a
+new planner needs no edits here. :data:`FIGURES` lists them with their captions, the tables they
 need and the table of values they plot, which the report prints beside each figure.
 """
 
@@ -32,6 +32,7 @@ from sarlink.paper.experiments import (
     DRONES,
     FIG2_DRONES,
     FIG5_RANGES,
+    OTHERS,
     RANGES,
     SIGMA,
     TD_FIG3,
@@ -41,7 +42,7 @@ from sarlink.paper.experiments import (
 from sarlink.planners import get_planner, planner_names
 
 __all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
-           "fig8", "save"]
+           "fig8", "fig9", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
@@ -118,12 +119,15 @@ def _axes(fig: Figure | None, rows: int, cols: int, *,
     return fig, fig.subplots(rows, cols, squeeze=False, sharey=sharey)
 
 
-def _legend(fig: Figure, planners: Sequence[str]) -> None:
-    """One legend for the whole figure, planners in the registry's order."""
+def _legend(fig: Figure, planners: Sequence[str], faint: Sequence[str] = ()) -> None:
+    """One legend for the whole figure, planners in the registry's order; the ``faint`` ones
+    (references drawn dashed, see :func:`_lines`) after them."""
     handles = [Line2D([], [], color=get_planner(p).colour, marker=get_planner(p).marker)
                for p in planners]
-    fig.legend(handles, [_label(p) for p in planners], loc="outside upper center",
-               ncols=len(planners), frameon=False)
+    handles += [Line2D([], [], color=get_planner(p).colour, ls="--", lw=0.9) for p in faint]
+    labels = [_label(p) for p in (*planners, *faint)]
+    fig.legend(handles, labels, loc="outside upper center", ncols=min(len(labels), 5),
+               frameon=False)
 
 
 def _lines(ax: Axes, rows: pd.DataFrame, x: str, measure: Measure, planners: Sequence[str], *,
@@ -319,6 +323,32 @@ def fig8(curve: pd.DataFrame, main: pd.DataFrame, report_curve: pd.DataFrame,
     return fig
 
 
+_MODES = (("continue", "the paper's drones"), ("report", "drones that report"))
+
+
+@_style()
+def fig9(main: pd.DataFrame, report: pd.DataFrame, others: pd.DataFrame,
+         fig: Figure | None = None) -> Figure:
+    """Beyond the paper: the other planners (the IAMSAR search patterns; solid, with bands)
+    beside the paper's planners (dashed): P_s against N_m at t_d = 2000 s, a column per r_c,
+    (a) as in the paper and (b) with drones that report, each against the paper's planners
+    flown the same way."""
+    fig, axes = _axes(fig, len(_MODES), len(RANGES))
+    planners, paper = _planners(others), _planners(main, report)
+    for row, (mode, about), table, tag in zip(axes, _MODES, (main, report), "ab", strict=True):
+        mine = _at(others[others["on_detect"] == mode], TD_FIG3)
+        for ax, rc in zip(row, RANGES, strict=True):
+            theirs = _at(table, TD_FIG3)
+            _lines(ax, theirs[theirs["rc"] == rc], "drones", P_S, paper, dodge=0.2, faint=True)
+            _lines(ax, mine[mine["rc"] == rc], "drones", P_S, planners, dodge=0.2)
+            ax.set(title=f"({tag}) {about}, $r_c$ = {rc:g} m", xlabel="number of drones $N_m$",
+                   xticks=DRONES[::2])
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    _legend(fig, planners, paper)
+    return fig
+
+
 def save(fig: Figure, folder: Path, name: str) -> list[Path]:
     """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -383,6 +413,15 @@ def _fig8_values(curve: pd.DataFrame, main: pd.DataFrame, report_curve: pd.DataF
         rows, ["rc", "td", "planner", "drones", "on_detect"], [P_S]))]
 
 
+def _fig9_values(main: pd.DataFrame, report: pd.DataFrame, others: pd.DataFrame
+                 ) -> list[tuple[str, pd.DataFrame]]:
+    paper = pd.concat([main.assign(on_detect="continue"), report.assign(on_detect="report")])
+    rows = pd.concat([paper, others])
+    rows = rows[rows["td"].isin([TD_SHORT, TD_FIG3])]
+    return [("P_s of every planner, with and without reporting", _values(
+        rows, ["on_detect", "rc", "td", "planner", "drones"], [P_S]))]
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """A paper figure: what it shows, the summary tables it needs, how to draw it and the
@@ -423,5 +462,11 @@ FIGURES = {f.number: f for f in (
                f"t_d = {TD_FIG3:g} s; (c) mission time and (d) search share against N_m, "
                f"t_d = {TD_LONG:g} s.", ("curve", "main", "report_curve", "report"), fig8,
                _fig8_values),
+    FigureSpec(OTHERS, "Beyond the paper: the other planners, the IAMSAR search patterns "
+               "(solid, with 95% bands), beside the paper's planners (dashed): P_s against the "
+               f"number of drones, t_d = {TD_FIG3:g} s, (a) as in the paper and (b) with drones "
+               "that fly to tell the BS (on_detect = report), each against the paper's "
+               "planners flown the same way.", ("main", "report", "others"), fig9,
+               _fig9_values),
 )}
-"""Every figure by its number in the paper, and :data:`BEYOND` after them."""
+"""Every figure by its number in the paper, and :data:`BEYOND` and :data:`OTHERS` after them."""

@@ -20,12 +20,13 @@ from pathlib import Path
 import pandas as pd
 
 from sarlink.config import DEFAULT_READING, Mission, Reading, get_reading
-from sarlink.paper.beyond import beyond_text
+from sarlink.paper.beyond import beyond_text, others_text
 from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import (
     BEYOND,
     CURVE_TDS,
     DRONES,
+    OTHERS,
     P_MISS,
     RANGES,
     SEED,
@@ -263,6 +264,23 @@ def _beyond(tables: dict[str, pd.DataFrame]) -> list[_Block]:
         "2000 s."), _List(beyond_text(tables["main"], tables["report"]))]
 
 
+def _others(tables: dict[str, pd.DataFrame]) -> list[_Block]:
+    if not {"main", "report", "others"} <= set(tables):
+        return []
+    others = tables["others"]
+    labels = ", ".join(get_planner(p).label for p in dict.fromkeys(others["planner"]))
+    return [_Heading("Beyond the paper: the search patterns SAR teams fly", 2), _Para(
+        "A SAR reviewer expects the patterns of the IAMSAR Manual beside the paper's planners: "
+        "parallel track (the area split among the drones), expanding square and sector "
+        "search, each from the BS (docs/model.md, Search patterns), and every other registered "
+        f"planner. Here: {labels}. They fly the grid of Figs. 2-6 as in the paper and with "
+        "drones that report (on_detect = report), on the same runs (common random numbers); "
+        f"Figure {OTHERS} draws them beside the paper's planners flown the same way. P_s "
+        "comparisons carry Newcombe's 95% interval, over N_m = 2-22, r_c = 500, 1000, 2000 m "
+        "and t_d = 1000 and 2000 s."),
+        _List(others_text(tables["main"], tables["report"], others))]
+
+
 def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
     if link is None:
         return []
@@ -284,7 +302,8 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
             *_claims(findings, tables, reading), *_sensitivity(sensitivity),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
-            *_beyond(tables), *_figures(out, figures, tables), *_replay(out, replay)]
+            *_beyond(tables), *_others(tables), *_figures(out, figures, tables),
+            *_replay(out, replay)]
 
 
 # -- rendering ----------------------------------------------------------------------------------

@@ -8,10 +8,11 @@ Layout of the output folder::
                            by readings and by the sensitivity analysis)
     plan_times.json        Fig. 1's measured plan times, with their setting and machine
     tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
-                           plan_times, and sensitivity (claim × single change of the reading)
+                           plan_times, report, report_curve, others (the planners beyond
+                           the paper), and sensitivity (claim × single change of the reading)
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
-    replay-rc500.html      one run flown by every planner, replayed side by side (linked)
+    replay-rc500.html      one run flown by each of the paper's planners, side by side (linked)
 """
 
 from __future__ import annotations
@@ -111,9 +112,9 @@ def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
 
 
 def _replay(out: Path, reading: str) -> ReplayLink:
-    """Every planner flying one run at r_c = 500 m, side by side (``replay-rc500.html``): the
-    first run of the paper's seed that every planner notifies, so that each panel shows a
-    detection and the multihop path that carried it to the BS."""
+    """Every planner of the paper flying one run at r_c = 500 m, side by side
+    (``replay-rc500.html``): the first run of the paper's seed that every one notifies, so
+    that each panel shows a detection and the multihop path that carried it to the BS."""
     mission = Mission.build(reading=reading, drones=10, rc=500.0)
     planners = list(PAPER_PLANNERS)
     run = next((k for k in range(100) if all(
@@ -123,10 +124,10 @@ def _replay(out: Path, reading: str) -> ReplayLink:
     times = ", ".join(f"{get_planner(p.mission.team.planner).label} {p.result.t_notify:g} s"
                       for p in page.panels if p.result.t_notify is not None)
     about = (f"Run {run} of seed {SEED} at N = 10, r_c = 500 m, t_d = "
-             f"{mission.timing.horizon:g} s, flown by each planner (same target, same take-off) "
-             "and replayed side by side under one time control: the first run of the seed that "
-             "every planner notifies, so that each panel shows a detection and how the news "
-             f"travelled to the BS. The BS was notified at: {times}.")
+             f"{mission.timing.horizon:g} s, flown by each of the paper's planners (same "
+             "target, same take-off) and replayed side by side under one time control: the "
+             "first run of the seed that every one notifies, so that each panel shows a "
+             f"detection and how the news travelled to the BS. The BS was notified at: {times}.")
     return ReplayLink(page.write(out / "replay-rc500.html"), about)
 
 
@@ -148,7 +149,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     quick
         Few runs: the trends in minutes, with wide intervals. The report says so.
     figures
-        Paper figure numbers (1–7) to reproduce; default all.
+        Figure numbers to reproduce (the paper's 1–7, 8 and 9 beyond it); default all.
     workers, scheduler
         As for :func:`sarlink.sweep`: local worker processes, or a Dask scheduler's address.
     progress
@@ -202,7 +203,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         _write_tables(out / "tables", {"sensitivity": study.matrix})
     t0 = time.perf_counter()
     replay = _replay(out, reading)
-    stages.append(Stage("replay", f"{replay.page.name}: one run by each planner",
+    stages.append(Stage("replay", f"{replay.page.name}: one run by each paper planner",
                         time.perf_counter() - t0))
     seconds = time.perf_counter() - start
     where = (f"Dask scheduler {scheduler}" if scheduler is not None

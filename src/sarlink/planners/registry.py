@@ -1,5 +1,6 @@
-"""The planners by name: the paper's, those registered in code, and those of installed
-packages (entry point group ``sarlink.planners``, loaded on first use; docs/plugins.md)."""
+"""The planners by name: the paper's, the IAMSAR search patterns, those registered in code,
+and those of installed packages (entry point group ``sarlink.planners``, loaded on first use;
+docs/plugins.md)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from sarlink.config import ConfigError
 from sarlink.entrypoints import discover
 from sarlink.planners.base import Planner
 from sarlink.planners.paper import PAPER
+from sarlink.planners.patterns import PATTERNS
 
 __all__ = ["Entry", "adopt", "broken_plugins", "get_planner", "planner_entries", "planner_names",
            "register_planner", "registered_in_code"]
@@ -23,7 +25,7 @@ class Entry:
     origin: str  # "sarlink", "code (<module>)" or "<distribution> <version> (entry point ...)"
 
 
-_ENTRIES: dict[str, Entry] = {p.name: Entry(p, "sarlink") for p in PAPER}
+_ENTRIES: dict[str, Entry] = {p.name: Entry(p, "sarlink") for p in (*PAPER, *PATTERNS)}
 _BROKEN: dict[str, str] = {}
 _LOADED = False
 

@@ -28,4 +28,4 @@ def rays(mission: Mission) -> list[np.ndarray]:
     return [np.array([edge_point(bs, 2 * math.pi * i / n, size), bs]) for i in range(n)]
 
 
-RAYS = RoutePlanner("rays", "Rays", rays, colour="#17becf", marker="*")
+RAYS = RoutePlanner("rays", "Rays", rays, colour="#e377c2", marker="h")

@@ -41,4 +41,4 @@ def decide(k: int, p: Params, obs: Observation, ws: np.ndarray, deciding: np.nda
 
 
 TETHER = RulePlanner("tether", "Tether", DistributedRule("tether", decide, near=True),
-                     colour="#bcbd22", marker="X")
+                     colour="#aec7e8", marker="p")
