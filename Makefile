@@ -53,14 +53,14 @@ browser:
 	fi
 
 lint: $(BIN)/sarlink
-	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/ruff check src tests benchmarks docs/hooks.py
 	$(BIN)/mypy
 
 test: browser lint
 	$(BIN)/pytest -q
 
 docs: $(BIN)/sarlink
-	$(BIN)/mkdocs build --strict --site-dir site
+	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict --site-dir site
 
 # One command re-locks after a dependency changed in pyproject.toml (commit requirements.lock).
 lock:
