@@ -21,7 +21,7 @@ BROWSER := /usr/bin/chromium /usr/bin/chromedriver
 
 $(BIN)/sarlink: pyproject.toml $(LOCK)
 	@if [ "$(UV)" != none ] && { [ -x "$(UV)" ] || \
-	        $(PYTHON) -m pip install --quiet --target $(TOOLS) "$(UV_VERSION)"; }; then \
+	        $(PYTHON) -m pip install --quiet --root-user-action=ignore --target $(TOOLS) "$(UV_VERSION)"; }; then \
 	    echo "installing $(LOCK) into $(VENV) with uv"; \
 	    $(UV) venv --quiet --clear --python $(PYTHON) $(VENV) && \
 	    $(UV) pip sync --quiet --python $(BIN)/python $(LOCK) && \
@@ -64,7 +64,7 @@ docs: $(BIN)/sarlink
 
 # One command re-locks after a dependency changed in pyproject.toml (commit requirements.lock).
 lock:
-	@[ -x "$(UV)" ] || $(PYTHON) -m pip install --quiet --target $(TOOLS) "$(UV_VERSION)"
+	@[ -x "$(UV)" ] || $(PYTHON) -m pip install --quiet --root-user-action=ignore --target $(TOOLS) "$(UV_VERSION)"
 	$(UV) pip compile pyproject.toml $(EXTRAS) --universal --python-version 3.11 \
 	    --generate-hashes --quiet -o $(LOCK)
 
