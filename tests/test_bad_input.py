@@ -146,7 +146,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     (["plan", "--drones", "65"], ["1 to 64 drones"]),
     (["plan", "--population", "7"], ["--population (mtsp.population)", "8"]),
     (["plan", "--iterations", "0"], ["--iterations", "greater than or equal to 1"]),
-    (["plan", "--seed", "-1"], ["'--seed'", "greater than or equal to 0"]),
+    (["plan", "--seed", "-1"], ["--seed (mtsp.plan_seed)", "greater than or equal to 0"]),
     (["plan", "--size", "0"], ["--size (area.size)", "greater than 0"]),
     (["plan", "--size", "1e9", "--r", "1"], ["at most 10,000 cells", "at most 100"]),
     (["plan", "--speed", "0"], ["--speed (team.speed)", "greater than 0"]),

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from sarlink import Mission, simulate
 from sarlink.engine.graph import linked, links
-from sarlink.engine.radios.shadowing import draw_shadowing
+from sarlink.engine.radios.lognormal import draw_shadowing
 from sarlink.simulation import prepare
 
 PLANNERS = ["covb", "conb", "concov"]

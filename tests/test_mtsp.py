@@ -104,7 +104,7 @@ def test_grid_cells_when_size_is_not_a_multiple_of_r() -> None:
 @pytest.mark.parametrize("solver", ["ga", "ortools"])
 def test_plan_visits_every_cell_once_from_and_to_the_bs(solver: str, objective: str,
                                                         salesmen: int) -> None:
-    plan = solve(GRID, BS, salesmen, solver=solver, objective=objective, time_limit=0.3, **FAST)
+    plan = solve(GRID, BS, salesmen, solver=solver, objective=objective, budget=300, **FAST)
     assert sorted(i for tour in plan.tours for i in tour) == list(range(64))
     assert len(plan.tours) == salesmen
     assert min(map(len, plan.tours)) >= 64 // salesmen == plan.min_cells
@@ -120,7 +120,7 @@ def test_plan_visits_every_cell_once_from_and_to_the_bs(solver: str, objective: 
 
 def test_min_cells_holds_when_given() -> None:
     for solver in ("ga", "ortools"):
-        plan = solve(GRID, BS, 4, solver=solver, min_cells=12, time_limit=0.3, **FAST)
+        plan = solve(GRID, BS, 4, solver=solver, min_cells=12, budget=100, **FAST)
         assert min(map(len, plan.tours)) >= 12
 
 
@@ -163,19 +163,19 @@ def test_both_solvers_find_the_brute_force_optimum(n: int, salesmen: int, min_ce
     best = brute_force(points, depot, salesmen, min_cells, objective)
     for solver in ("ga", "ortools"):
         plan = solve(points, depot, salesmen, solver=solver, objective=objective,
-                     min_cells=min_cells, iterations=1000, time_limit=0.2)
+                     min_cells=min_cells, iterations=1000, budget=1000)
         assert cost(plan, objective) == pytest.approx(best, rel=1e-6), solver
 
 
 @pytest.mark.parametrize("salesmen", [6, 14, 22])
 def test_ortools_longest_tour_is_never_worse_than_the_ga_under_minmax(salesmen: int) -> None:
     ga = solve(GRID, BS, salesmen, objective="minmax")
-    ortools = solve(GRID, BS, salesmen, solver="ortools", objective="minmax", time_limit=2.0)
+    ortools = solve(GRID, BS, salesmen, solver="ortools", objective="minmax")
     assert ortools.longest <= ga.longest + 1e-6
 
 
 def test_ortools_reaches_the_tsplib_optimum_of_eil51() -> None:
-    plan = solve(EIL51[1:], tuple(EIL51[0]), 1, solver="ortools", time_limit=2.0)
+    plan = solve(EIL51[1:], tuple(EIL51[0]), 1, solver="ortools", budget=300)
     order = [EIL51[0], *EIL51[1:][list(plan.tours[0])], EIL51[0]]
     rounded = sum(round(math.dist(a, b)) for a, b in itertools.pairwise(order))
     assert rounded <= 426 * 1.01
@@ -201,7 +201,8 @@ def test_ortools_reaches_the_tsplib_optimum_of_eil51() -> None:
     ({"population": 7}, "population"),
     ({"iterations": 0}, "iterations"),
     ({"seed": -1}, "seed"),
-    ({"time_limit": 0.0}, "time_limit"),
+    ({"budget": 0}, "budget"),
+    ({"budget": 1.5}, "budget"),
 ])
 def test_invalid_arguments_are_named(kwargs: dict, name: str) -> None:
     args = {"points": GRID, "depot": BS, "salesmen": 2} | kwargs
@@ -241,7 +242,7 @@ class Cache:
 def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Cache]:
     """A private, empty plan cache that counts the solves behind :func:`plan_for`."""
     monkeypatch.setenv("SARLINK_CACHE_DIR", str(tmp_path))
-    monkeypatch.setattr(plan_cache, "ORTOOLS_TIME_LIMIT", 0.2)
+    monkeypatch.setattr(plan_cache, "STRONG_BUDGET", 200)
     state = Cache(tmp_path / "plans")
     real = mtsp.solve
 
@@ -281,6 +282,35 @@ def test_a_changed_plan_parameter_misses_the_cache(cache: Cache, change: dict) -
     plan_for(BASE, 3)
     plan_for(BASE.replace(**change), 3)
     assert cache.solves == 2 and len(list(cache.dir.glob("*.json"))) == 2
+
+
+@pytest.mark.parametrize("objective", ["minsum", "minmax"])
+def test_the_strong_solver_s_budget_is_in_the_cache_key(cache: Cache,
+                                                        monkeypatch: pytest.MonkeyPatch,
+                                                        objective: str) -> None:
+    """A plan is a function of its budget (never of the time): another budget, another key."""
+    mission = BASE.replace(solver="ortools", objective=objective)
+    plan_for(mission, 3)
+    (path,) = cache.dir.glob("*.json")
+    assert json.loads(path.read_text())["params"]["budget"] == 200
+    monkeypatch.setattr(plan_cache, "STRONG_BUDGET", 201)
+    mtsp.clear_cache(disk=False)
+    plan_for(mission, 3)
+    assert cache.solves == 2 and len(list(cache.dir.glob("*.json"))) == 2
+
+
+def test_the_default_budget_is_resolved_in_the_key(cache: Cache,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """None and the default it stands for share a plan; the GA's budget is its iterations."""
+    mission = BASE.replace(solver="ortools", objective="minmax")
+    monkeypatch.setattr(plan_cache, "STRONG_BUDGET", None)
+    monkeypatch.setattr(mtsp.ruin, "RUIN_ITERATIONS", 200)  # keep the test quick
+    plan_for(mission, 3)
+    monkeypatch.setattr(plan_cache, "STRONG_BUDGET", 200)
+    mtsp.clear_cache(disk=False)
+    plan_for(mission, 3)
+    assert cache.solves == 1
+    assert mtsp.budget_of("ga", "minsum", 64, 3, 101, 7) == 101
 
 
 def test_other_changes_hit_the_cache(cache: Cache) -> None:

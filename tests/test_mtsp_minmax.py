@@ -26,34 +26,29 @@ def plan(tours: tuple[tuple[int, ...], ...], min_cells: int) -> MtspPlan:
 
 
 def test_a_plan_depends_on_the_seed_only() -> None:
-    a, b = (solve_minmax(GRID, BS, 7, 9, 3, 60.0, restarts=2, iterations=2000)
+    a, b = (solve_minmax(GRID, BS, 7, 9, 3, restarts=2, iterations=2000)
             for _ in range(2))
     assert a == b
 
 
-def test_cutting_the_search_into_other_chunks_gives_the_same_plan(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    """The time limit is checked between chunks of steps; where they are cut must not matter."""
-    whole = solve_minmax(GRID, BS, 6, 10, 2, 60.0, restarts=1, iterations=1500)
-    monkeypatch.setattr(ruin, "_CHUNK", 7)
-    assert solve_minmax(GRID, BS, 6, 10, 2, 60.0, restarts=1, iterations=1500) == whole
-
-
-def test_large_instances_check_the_time_limit_after_fewer_steps() -> None:
-    assert ruin._chunk(64, 10) == ruin._CHUNK  # the paper's grid: whole chunks
-    assert ruin._chunk(10_000, 1) == 1  # one 10,000-point tour: after every step
+def test_large_instances_get_fewer_steps_by_default() -> None:
+    """The default budget is a function of the instance's size, never of the time."""
+    assert ruin.ruin_steps(64, 2) == ruin.RUIN_ITERATIONS  # the paper's grid: the full budget
+    assert ruin.ruin_steps(64, 22) == ruin.RUIN_ITERATIONS
+    assert ruin.ruin_steps(10_000, 1) == 1  # one 10,000-point tour
+    assert ruin.ruin_steps(1000, 10) < ruin.RUIN_ITERATIONS
 
 
 def test_more_search_never_gives_a_longer_plan_for_the_same_seed() -> None:
     """Restarts keep the best plan, and the first restart is the same with more of them."""
-    one = plan(solve_minmax(GRID, BS, 9, 7, 5, 60.0, restarts=1, iterations=1000), 7)
-    three = plan(solve_minmax(GRID, BS, 9, 7, 5, 60.0, restarts=3, iterations=1000), 7)
+    one = plan(solve_minmax(GRID, BS, 9, 7, 5, restarts=1, iterations=1000), 7)
+    three = plan(solve_minmax(GRID, BS, 9, 7, 5, restarts=3, iterations=1000), 7)
     assert three.longest <= one.longest
 
 
 @pytest.mark.parametrize(("salesmen", "min_cells"), [(4, 16), (5, 12), (10, 6), (3, 1)])
 def test_every_tour_keeps_min_cells(salesmen: int, min_cells: int) -> None:
-    tours = solve_minmax(GRID, BS, salesmen, min_cells, 0, 60.0, restarts=1, iterations=3000)
+    tours = solve_minmax(GRID, BS, salesmen, min_cells, 0, restarts=1, iterations=3000)
     assert len(tours) == salesmen
     assert min(map(len, tours)) >= min_cells
     assert sorted(c for t in tours for c in t) == list(range(64))

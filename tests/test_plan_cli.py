@@ -31,7 +31,7 @@ FAST = ["--iterations", "200"]
 @pytest.fixture(autouse=True)
 def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
     monkeypatch.setenv("SARLINK_CACHE_DIR", str(tmp_path))
-    monkeypatch.setattr(plan_cache, "ORTOOLS_TIME_LIMIT", 0.2)
+    monkeypatch.setattr(plan_cache, "STRONG_BUDGET", 200)
     mtsp.clear_cache(disk=False)
     yield
     mtsp.clear_cache(disk=False)
@@ -48,6 +48,20 @@ def test_json_reports_the_plan_of_the_api() -> None:
     assert data["total"] == expected.total and data["longest"] == expected.longest
     assert data["longest_time"] == expected.longest / 4
     assert data["min_cells"] == 10 and data["cells"] == 64
+
+
+@pytest.mark.parametrize("objective", ["minsum", "minmax"])
+def test_the_same_command_gives_the_same_tours(objective: str) -> None:
+    """Every solver stops at a budget, never at a time: two solves from an empty cache agree
+    (benchmarks/bench_mtsp.py --busy checks it with the other core loaded)."""
+    args = ["plan", "--drones", "10", "--solver", "ortools", "--objective", objective, "--json"]
+    tours = []
+    for _ in range(2):
+        mtsp.clear_cache()
+        out = runner.invoke(app, args)
+        assert out.exit_code == 0, out.output
+        tours.append(json.loads(out.stdout)["tours"])
+    assert tours[0] == tours[1]
 
 
 def test_ortools_minmax_with_min_cells() -> None:

@@ -17,7 +17,13 @@ from sarlink import Mission, Trajectory, planner_names, simulate
 from sarlink.cli import app
 from sarlink.engine.codes import Mode
 from sarlink.playback import compare, replay
-from sarlink.playback.encoding import HEADING_LEVELS, decode, encode, frame_bytes
+from sarlink.playback.encoding import (
+    HEADING_LEVELS,
+    decode,
+    encode,
+    frame_bytes,
+    position_error_bound,
+)
 from sarlink.playback.events import events
 
 runner = CliRunner()
@@ -31,10 +37,11 @@ def shadowed():
     return simulate(mission, seed=3, run=2, trajectory=True), mission
 
 
-def _assert_same(decoded: Trajectory, traj: Trajectory, keep: np.ndarray, quantum) -> None:
+def _assert_same(decoded: Trajectory, traj: Trajectory, keep: np.ndarray, enc) -> None:
     np.testing.assert_array_equal(decoded.t, traj.t[keep])
     error = np.abs(decoded.positions - traj.positions[keep])
-    assert (error <= np.array(quantum) / 2 * (1 + 1e-9)).all()
+    bound = position_error_bound(enc, float(np.abs(traj.positions).max()))
+    assert (error <= bound).all()
     turn = np.angle(np.exp(1j * (decoded.headings - traj.headings[keep])))
     assert np.abs(turn).max() <= np.pi / HEADING_LEVELS * (1 + 1e-9)
     np.testing.assert_array_equal(decoded.mode, traj.mode[keep])
@@ -49,7 +56,10 @@ def test_a_run_round_trips_within_the_stated_precision(shadowed) -> None:
     enc = encode(traj)
     assert enc.stride == 1 and enc.frames == len(traj.t)
     assert max(enc.quantum) <= mission.area.size / 65535
-    _assert_same(decode(enc), traj, np.arange(len(traj.t)), enc.quantum)
+    # in a mission's area the rounding term is negligible: the bound is half a grid step
+    half = np.array(enc.quantum) / 2
+    assert (position_error_bound(enc, mission.area.size) <= half * (1 + 1e-9)).all()
+    _assert_same(decode(enc), traj, np.arange(len(traj.t)), enc)
 
 
 def test_over_the_budget_every_stride_th_step_and_the_last_are_kept(shadowed) -> None:
@@ -58,7 +68,7 @@ def test_over_the_budget_every_stride_th_step_and_the_last_are_kept(shadowed) ->
     enc = encode(traj, budget)
     keep = np.append(np.arange(0, len(traj.t), enc.stride), len(traj.t) - 1)
     assert enc.stride == 21 and enc.frames == len(keep)
-    _assert_same(decode(enc), traj, keep, enc.quantum)
+    _assert_same(decode(enc), traj, keep, enc)
 
 
 def _trajectory(positions: np.ndarray, seed: int) -> Trajectory:
@@ -82,7 +92,7 @@ def test_any_trajectory_round_trips(steps, drones, low, span, seed) -> None:
     positions = low + span * rng.random((steps, drones, 2))
     traj = _trajectory(positions, seed)
     enc = encode(traj)
-    _assert_same(decode(enc), traj, np.arange(steps), enc.quantum)
+    _assert_same(decode(enc), traj, np.arange(steps), enc)
 
 
 def test_events_are_the_run_s_detection_notification_and_mode_changes(shadowed) -> None:

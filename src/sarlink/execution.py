@@ -37,7 +37,17 @@ from rich.text import Text
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.simulation import Plugins, adopt_plugins, check_mission, plugins_in_code, prepare
+from sarlink.engine.build import radio_identity
+from sarlink.engine.radios import get_radio
+from sarlink.planners import MTSP_PLANNERS, get_planner
+from sarlink.simulation import (
+    Plugins,
+    adopt_plugins,
+    check_mission,
+    plugins_in_code,
+    prepare,
+    warm_up,
+)
 
 __all__ = ["Workers", "start_workers", "sweep", "sweep_all"]
 
@@ -106,6 +116,35 @@ def _init_worker(parent: int) -> None:
 _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 """One core per worker process: parallelism comes from the processes."""
 
+def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
+    """Compile one Numba part in this worker, or load it from Numba's cache: the kernel of a
+    planner's rule and a radio model (``("kernel", planner, radio)``), or the mTSP GA.
+
+    On a fresh machine every worker would otherwise compile each kernel at its first task
+    (10-30 s of CPU each) and the GA at its first mTSP plan (15 s); compiled once, the parts
+    spread over the workers, the others then load them from the cache.
+    """
+    adopt_plugins(plugins)
+    if part[0] == "kernel":
+        warm_up(part[1], part[2])
+    else:
+        from sarlink.mtsp import grid_cells, solve
+
+        solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
+
+
+def _parts(tasks: Sequence[_Task]) -> list[tuple[str, ...]]:
+    """The compiled parts ``tasks`` need: one kernel per rule and radio model, and the GA if
+    they plan with it."""
+    missions = {t.point.hash: t.point.mission for t in tasks}.values()
+    kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
+    for m in missions:
+        rule = get_planner(m.team.planner).rule
+        kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
+                           ("kernel", m.team.planner, m.radio))
+    ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
+    return [*kernels.values(), *([("mtsp",)] if ga else [])]
+
 
 @contextmanager
 def _environment(env: dict[str, str]) -> Iterator[None]:
@@ -134,8 +173,17 @@ class Workers(Protocol):
 class _Local:
     """A local process pool."""
 
-    def __init__(self, pool: ProcessPoolExecutor) -> None:
-        self.pool = pool
+    def __init__(self, pool: ProcessPoolExecutor, count: int) -> None:
+        self.pool, self.count = pool, count
+
+    def compile(self, tasks: Sequence[_Task]) -> None:
+        """Compile the parts ``tasks`` need on all workers at once (with one worker, each
+        task compiles what it needs when it needs it)."""
+        parts = _parts(tasks)
+        if self.count > 1 and len(parts) > 1:
+            plugins = plugins_in_code()
+            for future in [self.pool.submit(_compile, part, plugins) for part in parts]:
+                future.result()
 
     def results(self, tasks: Sequence[_Task]) -> _Results:
         futures = {self.pool.submit(_run_chunk, *call): task
@@ -192,7 +240,7 @@ def start_workers(workers: int | None = None, *, scheduler: str | None = None,
                 count, mp_context=context, initializer=_init_worker,
                 initargs=(os.getpid(),)) as pool:
             try:
-                yield _Local(pool)
+                yield _Local(pool, count)
             finally:
                 pool.shutdown(cancel_futures=True)
         return
@@ -283,6 +331,8 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
             total = sum(experiment.runs * len(store.points)
                         for store, (experiment, _) in zip(stores, jobs, strict=True))
             name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
+            if isinstance(pool, _Local):
+                pool.compile(tasks)
             with _progress_bar(progress and sys.stdout.isatty()) as bar, \
                     closing(pool.results(tasks)) as results:
                 job = bar.add_task(name, total=total,

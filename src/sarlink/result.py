@@ -53,6 +53,7 @@ class RunResult:
 
     @property
     def horizon(self) -> float:
+        """The last checkpoint, s: the time the run covers."""
         return float(self.checkpoints[-1])
 
     def _upto(self, td: float | None) -> float:

@@ -8,14 +8,17 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+import numpy as np
+
 from sarlink.config import Mission
-from sarlink.engine import Prepared, RadioModel, Scenario, get_radio, register_radio
+from sarlink.engine import Prepared, RadioModel, Scenario, Steering, get_radio, register_radio
 from sarlink.engine.radios import radios_in_code
 from sarlink.planners import Planner, get_planner
 from sarlink.planners.registry import adopt, registered_in_code
 from sarlink.result import RunResult
 
-__all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prepare", "simulate"]
+__all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prepare", "simulate",
+           "warm_up"]
 
 
 class Plugins(NamedTuple):
@@ -42,6 +45,16 @@ def check_mission(mission: Mission) -> None:
     known: what cannot be checked before plug-ins are loaded, checked where work starts."""
     get_planner(mission.team.planner)
     get_radio(mission.radio)
+
+
+def warm_up(planner: str, radio: str) -> None:
+    """Compile (or load from the disk cache) the kernel of ``planner``'s rule and the radio
+    model ``radio``, by flying one tiny run that needs no plan."""
+    rule = get_planner(planner).rule
+    mission = Mission.build(planner=planner, drones=1, horizon=10.0, radio=radio,
+                            sigma=0.0 if radio == "disc" else 1.0)
+    routes = () if rule is not None else (np.array([mission.area.bs_xy]),)
+    Prepared.build(mission, Steering(rule=rule, routes=routes)).run(0, 0)
 
 
 def prepare(mission: Mission) -> Prepared:

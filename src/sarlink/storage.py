@@ -43,6 +43,7 @@ from sarlink.config import ConfigError, Experiment, Mission, mission_hash
 __all__ = ["MANIFEST", "Point", "Store", "load", "open_store", "read_manifest", "run_table"]
 
 MANIFEST = "experiment.json"
+"""The file of a results folder that holds its experiment, grid points and format."""
 FORMAT = 1
 """Version of the folder layout, stored in the manifest."""
 

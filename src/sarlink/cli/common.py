@@ -1,9 +1,8 @@
-"""Helpers shared by the CLI commands: mission assembly, output paths, JSON."""
+"""Helpers shared by the CLI commands: output paths, JSON (mission flags: :mod:`.flags`)."""
 
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -11,35 +10,12 @@ import typer
 from rich.console import Console
 
 from sarlink.cli.errors import err_console, user_errors
-from sarlink.config import ConfigError, Mission, get_reading, param_groups
+from sarlink.config import ConfigError
 
-__all__ = ["build_mission", "console", "err_console", "output_folder", "plot_file",
+__all__ = ["console", "err_console", "output_folder", "plot_file",
            "print_json", "user_errors"]
 
 console = Console()
-
-
-def build_mission(config: Path | None, flags: Mapping[str, str] | None = None,
-                  reading: str | None = None, **overrides: Any) -> Mission:
-    """The mission of a TOML file (or the paper's defaults), with a named ``reading`` of the
-    paper (:data:`sarlink.config.READINGS`) and then the given flags applied.
-
-    ``overrides`` are flat mission parameters; an error about one names the option the user
-    typed: ``--param-name`` by default, or ``flags[param]`` (``{"horizon": "--td"}``).
-    """
-    base = Mission.from_toml(config) if config is not None else Mission()
-    if reading is not None:
-        base = base.replace(**get_reading(reading).choices)
-    given = {name: value for name, value in overrides.items() if value is not None}
-    try:
-        return base.replace(**given)
-    except ConfigError as exc:
-        message, groups = str(exc), param_groups()
-        for name in given:
-            flag = (flags or {}).get(name, "--" + name.replace("_", "-"))
-            dotted = f"{groups[name]}.{name}"
-            message = message.replace(dotted, f"{flag} ({dotted})")
-        raise ConfigError(message) from None
 
 
 def output_folder(path: Path, option: str) -> Path:

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from rich.table import Table
 
-from sarlink.cli.common import build_mission, console, print_json, user_errors
+from sarlink.cli.common import console, print_json, user_errors
+from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import ConfigError
 
 if TYPE_CHECKING:
@@ -126,7 +127,9 @@ def _print_tuning(planner: PlannerAnswer) -> None:
     console.print(table)
 
 
+@mission_flags("design")
 def design(
+    flags: MissionFlags,
     td: Annotated[float, typer.Option(help="target duration t_d, s")],
     ps: Annotated[float, typer.Option(help="required P_s(t_d), in (0, 1)")],
     planner: Annotated[list[str] | None, typer.Option(
@@ -135,14 +138,6 @@ def design(
         help="NAME=V1,V2: also try every planner with each value of a mission parameter; "
              "repeat for several; default: on_detect=continue,report")] = None,
     max_drones: Annotated[int, typer.Option(help="largest team considered")] = 22,
-    rc: Annotated[float | None, typer.Option(help="communication range r_c, m")] = None,
-    size: Annotated[float | None, typer.Option(help="side of the square area, m")] = None,
-    r: Annotated[float | None, typer.Option(help="sensing range r, m")] = None,
-    p_miss: Annotated[float | None, typer.Option(help="miss probability per look")] = None,
-    look: Annotated[str | None, typer.Option(help="per-pass or per-period")] = None,
-    shadowing_sigma: Annotated[float | None, typer.Option(help="shadowing sigma, dB")] = None,
-    pathloss_exponent: Annotated[float | None, typer.Option(help="path-loss exponent n")] = None,
-    config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
     confidence: Annotated[float, typer.Option(help="confidence of every decision")] = 0.95,
     max_runs: Annotated[int, typer.Option(help="budget: runs the whole design may use")
                         ] = 400_000,
@@ -170,8 +165,7 @@ def design(
     from sarlink.sizing import design as run_design  # pandas: only for this command
 
     with user_errors():
-        mission = build_mission(config, rc=rc, size=size, r=r, p_miss=p_miss, look=look,
-                                sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent)
+        mission = flags.mission()
         fields: dict[str, Any] = {
             "mission": mission, "td": td, "ps": ps,
             "max_drones": max_drones, "confidence": confidence, "max_runs": max_runs,

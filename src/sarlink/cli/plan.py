@@ -8,7 +8,8 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-from sarlink.cli.common import build_mission, console, plot_file, print_json, user_errors
+from sarlink.cli.common import console, plot_file, print_json, user_errors
+from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import Mission
 from sarlink.mtsp import MtspPlan, plan_for
 
@@ -26,21 +27,9 @@ def _save_plot(result: MtspPlan, mission: Mission, path: Path) -> None:
         plt.close(fig)
 
 
+@mission_flags("plan")
 def plan(
-    drones: Annotated[int | None, typer.Option(help="number of drones N_m (salesmen)")] = None,
-    solver: Annotated[str | None, typer.Option(help="ga (the paper's) or ortools")] = None,
-    objective: Annotated[str | None, typer.Option(
-        help="minsum (total distance, the paper's) or minmax (longest tour)")] = None,
-    min_cells: Annotated[int | None, typer.Option(
-        help="minimum cells per drone (default floor(cells / drones))")] = None,
-    seed: Annotated[int | None, typer.Option(
-        help="seed of the plan search (the GA, or the min-max search)", min=0)] = None,
-    size: Annotated[float | None, typer.Option(help="side a of the area, m")] = None,
-    r: Annotated[float | None, typer.Option(help="sensing range r = cell side, m")] = None,
-    speed: Annotated[float | None, typer.Option(help="flight speed V_m, m/s")] = None,
-    population: Annotated[int | None, typer.Option(help="GA population")] = None,
-    iterations: Annotated[int | None, typer.Option(help="GA iterations")] = None,
-    config: Annotated[Path | None, typer.Option(help="mission TOML; flags override it")] = None,
+    flags: MissionFlags,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the plan here")] = None,
 ) -> None:
@@ -50,11 +39,7 @@ def plan(
     """
     with user_errors():
         plot_file(plot)
-        mission = build_mission(
-            config, {"plan_seed": "--seed"}, drones=drones, solver=solver, objective=objective,
-            min_cells=min_cells, plan_seed=seed, size=size, r=r, speed=speed, population=population,
-            iterations=iterations,
-        )
+        mission = flags.mission()
         result = plan_for(mission, mission.team.drones)
         if plot is not None:
             _save_plot(result, mission, plot)

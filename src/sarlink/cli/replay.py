@@ -8,30 +8,19 @@ from typing import Annotated
 import typer
 
 from sarlink.cli import options
-from sarlink.cli.common import build_mission, console, user_errors
+from sarlink.cli.common import console, user_errors
+from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.planners import planner_names
 from sarlink.playback import compare
 
 
+@mission_flags("replay")
 def replay(
+    flags: MissionFlags,
     planners: Annotated[str | None, typer.Option(
         help="planners to compare, separated by commas; default all")] = None,
-    drones: options.Drones = None,
-    rc: options.Rc = None,
     seed: options.Seed = 0,
     run: options.Run = 0,
-    alpha: options.Alpha = None,
-    nr: options.Nr = None,
-    td: options.Td = None,
-    r: options.R = None,
-    p_miss: options.PMiss = None,
-    look: options.Look = None,
-    shadowing_sigma: options.Sigma = None,
-    pathloss_exponent: options.PathlossExponent = None,
-    stop: options.Stop = None,
-    on_detect: options.OnDetect = None,
-    reading: options.Reading = None,
-    config: options.Config = None,
     out: Annotated[Path, typer.Option("--out", "-o", help="the HTML file to write")
                    ] = Path("replay.html"),
 ) -> None:
@@ -41,11 +30,7 @@ def replay(
     names = planner_names() if planners is None else [
         name.strip() for name in planners.split(",") if name.strip()]
     with user_errors():
-        mission = build_mission(
-            config, drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r, p_miss=p_miss,
-            look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent, stop=stop,
-            on_detect=on_detect, reading=reading,
-        )
+        mission = flags.mission()
         page = compare(mission, names, seed, run)
         page.write(out)
     for panel in page.panels:

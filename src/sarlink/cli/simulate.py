@@ -10,14 +10,8 @@ import typer
 from rich.table import Table
 
 from sarlink.cli import options
-from sarlink.cli.common import (
-    build_mission,
-    console,
-    output_file,
-    plot_file,
-    print_json,
-    user_errors,
-)
+from sarlink.cli.common import console, output_file, plot_file, print_json, user_errors
+from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import Mission
 from sarlink.planners import get_planner
 from sarlink.playback import replay
@@ -42,24 +36,11 @@ def _save_plot(result: RunResult, mission: Mission, path: Path) -> None:
         plt.close(fig)
 
 
+@mission_flags("simulate")
 def simulate(
-    planner: Annotated[str | None, typer.Option(help="covb, conb, concov, mtsp, mtsp-conb")] = None,
-    drones: options.Drones = None,
-    rc: options.Rc = None,
+    flags: MissionFlags,
     seed: options.Seed = 0,
     run: options.Run = 0,
-    alpha: options.Alpha = None,
-    nr: options.Nr = None,
-    td: options.Td = None,
-    r: options.R = None,
-    p_miss: options.PMiss = None,
-    look: options.Look = None,
-    shadowing_sigma: options.Sigma = None,
-    pathloss_exponent: options.PathlossExponent = None,
-    stop: options.Stop = None,
-    on_detect: options.OnDetect = None,
-    reading: options.Reading = None,
-    config: options.Config = None,
     json: Annotated[bool, typer.Option("--json", help="print one JSON object")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the run here")] = None,
     html: Annotated[Path | None, typer.Option(
@@ -70,12 +51,7 @@ def simulate(
     with user_errors():
         plot_file(plot)
         output_file(html, "--html")
-        mission = build_mission(
-            config, {"horizon": "--td", "sigma": "--shadowing-sigma"}, planner=planner,
-            drones=drones, rc=rc, alpha=alpha, nr=nr, horizon=td, r=r,
-            p_miss=p_miss, look=look, sigma=shadowing_sigma, pathloss_exponent=pathloss_exponent,
-            stop=stop, on_detect=on_detect, reading=reading,
-        )
+        mission = flags.mission()
         result = run_simulation(mission, seed=seed, run=run,
                                 trajectory=plot is not None or html is not None)
         if plot is not None:

@@ -286,6 +286,13 @@ class Mission(Checked):
         """A duration in whole time increments (durations are validated as multiples of dt)."""
         return max(1, round(seconds / self.timing.dt))
 
+    @model_validator(mode="after")
+    def _disc_has_no_fades(self) -> Self:
+        if self.channel.radio == "disc" and self.channel.sigma > 0:
+            raise ValueError(f"channel.radio 'disc' has no shadowing; channel.sigma = "
+                             f"{self.channel.sigma} needs channel.radio = 'shadowing' (or none)")
+        return self
+
     @property
     def radio(self) -> str:
         """The radio model's name, resolving the paper's default."""

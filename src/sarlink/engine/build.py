@@ -33,7 +33,7 @@ from sarlink.engine.rules import none
 
 ENGINE = Path(__file__).resolve().parent
 _BLOCK = re.compile(r"# ---- plug-ins: .*?# ---- end of plug-ins ----\n", re.DOTALL)
-_MEMO: dict[tuple[DistributedRule | None, RadioModel, bool], Callable[..., Any]] = {}
+_MEMO: dict[tuple[object, ...], Callable[..., Any]] = {}
 
 
 def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
@@ -55,9 +55,11 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel) -> str:
         lines += _hook_lines(alias, hooks.get(alias) or default)
     for name, fn in radio.hooks().items():
         lines += _hook_lines("radio_" + name, fn)
+    if isinstance(radio.static, bool):
+        lines += ["", "", "@njit(inline='always')", "def radio_static(p, rp):",
+                  f"    return {radio.static}", ""]
     lines += [f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
-              f"RADIO_STATIC = {radio.static}",
               "# ---- end of plug-ins ----", ""]
     return "\n".join(lines)
 
@@ -114,6 +116,12 @@ def _import(path: Path) -> ModuleType:
     return module
 
 
+def radio_identity(radio: RadioModel) -> tuple[object, ...]:
+    """What a kernel depends on of ``radio``: its hooks (models that share them, the disc and
+    log-normal shadowing, share kernels)."""
+    return (*(python_function(f) for f in radio.hooks().values()), radio.static)
+
+
 def _slug(name: str) -> str:
     return re.sub(r"[^0-9a-zA-Z]+", "_", name).strip("_").lower() or "x"
 
@@ -124,12 +132,11 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel, *,
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
     """
-    key = (rule, radio, cache)
+    key = (rule, radio_identity(radio), cache)  # the disc and shadowing share a kernel
     if key not in _MEMO:
         text = kernel_source(rule, radio, cache=cache)
         digest = kernel_digest(rule, radio, text)
-        rule_name = _slug(rule.name) if rule else "routes"
-        name = f"sarlink_kernel_{rule_name}_{_slug(radio.name)}_{digest}"
+        name = f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}_{digest}"
         if cache:
             path = cache_root() / "kernels" / f"{name}.py"
             _write_once(path, text)

@@ -17,7 +17,9 @@ Hook signatures (``p`` is :class:`~sarlink.engine.params.Params`, ``obs`` an
 - radio ``init(p, rp, m, mp) -> thr2``: the squared link range of every pair of the ``m``
   nodes, shape ``(m, mp)`` (zero towards the ``mp - m`` padding nodes);
 - radio ``update(thr2, p, rp, k, rng) -> None``: refill ``thr2`` at step ``k`` where it changes;
-- radio ``nominal(p, rp) -> float``: the range planners predict with, m.
+- radio ``nominal(p, rp) -> float``: the range planners predict with, m;
+- radio ``static(p, rp) -> bool`` (or a plain ``bool``): whether ``thr2`` never changes after
+  ``init`` (a team that has settled can then jump to the horizon).
 
 ``rp`` is the radio's parameter array (``RadioModel.params``).
 """
@@ -35,7 +37,7 @@ if TYPE_CHECKING:
     from sarlink.config import Mission
 
 _RULE_HOOKS = {"prepare": 2, "due": 5, "decide": 7}
-_RADIO_HOOKS = {"init": 4, "update": 5, "nominal": 2}
+_RADIO_HOOKS = {"init": 4, "update": 5, "nominal": 2, "static": 2}
 
 
 def python_function(fn: Any) -> Callable[..., Any]:
@@ -93,7 +95,8 @@ class RadioModel:
     """A channel model: which pairs of nodes are linked, step by step.
 
     ``static`` says the thresholds never change after ``init`` (a team that has settled can
-    then jump to the horizon); ``params`` maps a mission to the model's parameter array
+    then jump to the horizon): a ``bool``, or a hook of the mission when it depends on it;
+    ``params`` maps a mission to the model's parameter array
     ``rp`` (default: none: the built-in models read the mission's ``channel`` scalars from
     ``p``).
     """
@@ -102,13 +105,16 @@ class RadioModel:
     init: Callable[..., Any]
     update: Callable[..., Any]
     nominal: Callable[..., Any]
-    static: bool = False
+    static: bool | Callable[..., Any] = False
     params: Callable[[Mission], Sequence[float]] | None = None
 
     def __post_init__(self) -> None:
         for hook, arity in _RADIO_HOOKS.items():
-            check_hook("radio model", self.name, hook, getattr(self, hook), arity)
+            fn = getattr(self, hook)
+            if not isinstance(fn, bool):
+                check_hook("radio model", self.name, hook, fn, arity)
 
     def hooks(self) -> dict[str, Callable[..., Any]]:
-        """The hook functions by name."""
-        return {hook: getattr(self, hook) for hook in _RADIO_HOOKS}
+        """The hook functions by name (a ``bool`` ``static`` is not one)."""
+        return {hook: getattr(self, hook) for hook in _RADIO_HOOKS
+                if not isinstance(getattr(self, hook), bool)}

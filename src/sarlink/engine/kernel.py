@@ -35,16 +35,16 @@ from sarlink.engine.records import NEVER, RunRecord
 
 # isort: off
 # ---- plug-ins: this block is replaced per rule and radio model (sarlink.engine.build) ----
-from sarlink.engine.radios.disc import init as radio_init
-from sarlink.engine.radios.disc import nominal as radio_nominal
-from sarlink.engine.radios.disc import update as radio_update
+from sarlink.engine.radios.lognormal import init as radio_init
+from sarlink.engine.radios.lognormal import nominal as radio_nominal
+from sarlink.engine.radios.lognormal import static as radio_static
+from sarlink.engine.radios.lognormal import update as radio_update
 from sarlink.engine.rules.none import decide as rule_decide
 from sarlink.engine.rules.none import due as rule_due
 from sarlink.engine.rules.none import prepare as rule_prepare
 
 RULE_DUE = False
 RULE_NEAR = False
-RADIO_STATIC = True
 # ---- end of plug-ins ----
 # isort: on
 
@@ -102,7 +102,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     t_det = t_not = NEVER
     detector = -1
     routes = wp.shape[0] > 0
-    may_settle = RADIO_STATIC and not p.record  # a recorded run keeps every step
+    may_settle = radio_static(p, rp) and not p.record  # a recorded run keeps every step
     home_max = motion.farthest_home(p)
 
     for k in range(p.n_steps + 1):

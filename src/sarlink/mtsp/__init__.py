@@ -11,21 +11,26 @@ cells and back (:mod:`.plan`). :func:`solve` checks the arguments and hands them
     The strong solver to measure the GA against: OR-Tools routing with guided local search for
     ``minsum``, a seeded ruin-and-recreate search for ``minmax`` (where OR-Tools stalls).
 
+Every solver stops at a budget (GA iterations, OR-Tools solutions, ruin-and-recreate steps:
+:func:`budget_of`), never at a time, so a plan is a function of its inputs and seed only.
 :func:`plan_for` makes each mission's plan once and caches it on disk (:mod:`.cache`).
 """
 
 from sarlink.mtsp.cache import CACHE_VERSION, cache_dir, clear_cache, plan_for, solve_for
 from sarlink.mtsp.grid import grid_cells
-from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT
+from sarlink.mtsp.ortools import ORTOOLS_SOLUTIONS
 from sarlink.mtsp.plan import MtspPlan, Objective, Solver
-from sarlink.mtsp.solvers import solve
+from sarlink.mtsp.ruin import RUIN_ITERATIONS
+from sarlink.mtsp.solvers import budget_of, solve
 
 __all__ = [
     "CACHE_VERSION",
-    "ORTOOLS_TIME_LIMIT",
+    "ORTOOLS_SOLUTIONS",
+    "RUIN_ITERATIONS",
     "MtspPlan",
     "Objective",
     "Solver",
+    "budget_of",
     "cache_dir",
     "clear_cache",
     "grid_cells",

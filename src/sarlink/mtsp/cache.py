@@ -24,9 +24,8 @@ from filelock import FileLock
 from sarlink.cachedir import cache_root
 from sarlink.config import ConfigError
 from sarlink.mtsp.grid import grid_cells
-from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT
 from sarlink.mtsp.plan import MtspPlan
-from sarlink.mtsp.solvers import solve
+from sarlink.mtsp.solvers import budget_of, solve
 
 if TYPE_CHECKING:
     from sarlink.config import Mission
@@ -36,8 +35,13 @@ __all__ = ["CACHE_VERSION", "cache_dir", "clear_cache", "plan_for", "solve_for"]
 MAX_CELLS = 10_000
 """Most cells of a plan: the solvers hold a dense distance matrix (800 MB at this size)."""
 
-CACHE_VERSION = 3
-"""Bumped whenever a solver or the file format changes, so that old plans are not reused."""
+CACHE_VERSION = 4
+"""Bumped whenever a solver or the file format changes, so that old plans are not reused
+(4: the strong solver stops at a budget, never at a time)."""
+
+STRONG_BUDGET: int | None = None
+"""The strong solver's budget for missions' plans; None: :func:`sarlink.mtsp.budget_of`'s
+default. Part of the cache key (resolved), like every setting that shapes a plan."""
 
 
 _MEMO: dict[str, MtspPlan] = {}
@@ -67,6 +71,7 @@ def clear_cache(*, disk: bool = True) -> int:
 def _plan_params(mission: Mission, salesmen: int, cells: int) -> dict[str, Any]:
     """Everything a mission's plan depends on; ``min_cells`` resolved so None shares a key."""
     m = mission.mtsp
+    min_cells = m.min_cells if m.min_cells is not None else cells // salesmen
     return {
         "version": CACHE_VERSION,
         "size": mission.area.size,
@@ -75,11 +80,11 @@ def _plan_params(mission: Mission, salesmen: int, cells: int) -> dict[str, Any]:
         "salesmen": salesmen,
         "solver": m.solver,
         "objective": m.objective,
-        "min_cells": m.min_cells if m.min_cells is not None else cells // salesmen,
+        "min_cells": min_cells,
         "population": m.population,
         "iterations": m.iterations,
         "plan_seed": m.plan_seed,
-        "time_limit": ORTOOLS_TIME_LIMIT,
+        "budget": budget_of(m.solver, m.objective, cells, salesmen, m.iterations, STRONG_BUDGET),
     }
 
 
@@ -94,7 +99,7 @@ def solve_for(mission: Mission, salesmen: int) -> MtspPlan:
     m = mission.mtsp
     return solve(points, mission.area.bs_xy, salesmen, solver=m.solver, objective=m.objective,
                  min_cells=params["min_cells"], population=m.population,
-                 iterations=m.iterations, seed=m.plan_seed, time_limit=ORTOOLS_TIME_LIMIT)
+                 iterations=m.iterations, seed=m.plan_seed, budget=STRONG_BUDGET)
 
 
 def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
@@ -104,7 +109,7 @@ def plan_for(mission: Mission, salesmen: int) -> MtspPlan:
     of everything they depend on (:data:`CACHE_VERSION` included). Files are written
     atomically; an unreadable file counts as missing and is rewritten. A process about to
     solve a plan holds a lock on it, so workers that need the same plan at once solve it
-    once and all use that one (OR-Tools' plans may differ from one solve to the next).
+    once and all use that one.
     """
     points, params = _checked_params(mission, salesmen)
     key = hashlib.sha256(json.dumps(params, sort_keys=True).encode()).hexdigest()[:32]

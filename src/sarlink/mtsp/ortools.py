@@ -14,12 +14,13 @@ import numpy as np
 
 from sarlink.mtsp.plan import distance_matrix
 
-__all__ = ["ORTOOLS_TIME_LIMIT", "solve_ortools"]
+__all__ = ["ORTOOLS_SOLUTIONS", "solve_ortools"]
 
-ORTOOLS_TIME_LIMIT = 5.0
-"""Default time of the strong solver, s: OR-Tools' guided local search (min-sum) never stops by
-itself and runs this long; the min-max search ends earlier, at its iteration budget or at the
-floor. A plan is made once and cached."""
+ORTOOLS_SOLUTIONS = 1000
+"""Default budget of the min-sum search: the solutions OR-Tools' guided local search may
+generate (its ``solution_limit``). The search never stops by itself; a count of solutions,
+unlike a time limit, ends it at the same plan on every machine (about 3 s on the paper's grid,
+within 0.1 % of the total of a 5 s search: docs/mtsp.md)."""
 
 _ORTOOLS_TICKS = 1_000_000
 """OR-Tools needs integer arc costs: the longest arc is scaled to this many ticks."""
@@ -27,27 +28,28 @@ _ORTOOLS_TICKS = 1_000_000
 
 def solve_ortools(
     points: np.ndarray, depot: tuple[float, float], salesmen: int, min_cells: int,
-    time_limit: float,
+    solutions: int = ORTOOLS_SOLUTIONS,
 ) -> tuple[tuple[int, ...], ...]:
     """Min-sum tours by guided local search from an angular sweep around the depot cut into
     equal parts: OR-Tools' first-solution heuristics cannot satisfy the ``min_cells`` bound,
-    the sweep always does."""
+    the sweep always does. The search ends after ``solutions`` solutions, so the plan depends
+    on the inputs only (OR-Tools' routing search is single-threaded and has no random seed)."""
     dist = distance_matrix(points, depot)
     scale = _ORTOOLS_TICKS / dist.max() if dist.max() > 0 else 1.0
     ticks = np.rint(dist * scale).astype(np.int64)
     angles = np.arctan2(points[:, 1] - depot[1], points[:, 0] - depot[0])
     sweep = np.argsort(angles, kind="stable") + 1
     routes = [part.tolist() for part in np.array_split(sweep, salesmen)]
-    routes = _ortools_search(ticks, salesmen, min_cells, routes, time_limit)
+    routes = _ortools_search(ticks, salesmen, min_cells, routes, solutions)
     return tuple(tuple(node - 1 for node in route) for route in routes)
 
 
 def _ortools_search(
-    ticks: np.ndarray, salesmen: int, min_cells: int, routes: list[list[int]], seconds: float,
+    ticks: np.ndarray, salesmen: int, min_cells: int, routes: list[list[int]], solutions: int,
 ) -> list[list[int]]:
-    """Guided local search from ``routes`` (node lists, depot 0 excluded) for ``seconds`` on
-    the arc costs ``ticks``; a count dimension bounds every tour below by ``min_cells`` nodes.
-    """
+    """Guided local search from ``routes`` (node lists, depot 0 excluded) on the arc costs
+    ``ticks`` until it has generated ``solutions`` solutions; a count dimension bounds every
+    tour below by ``min_cells`` nodes."""
     from ortools.constraint_solver import pywrapcp, routing_enums_pb2
 
     nodes = len(ticks)
@@ -64,7 +66,7 @@ def _ortools_search(
     params = pywrapcp.DefaultRoutingSearchParameters()
     params.local_search_metaheuristic = (
         routing_enums_pb2.LocalSearchMetaheuristic.GUIDED_LOCAL_SEARCH)
-    params.time_limit.FromMilliseconds(max(1, round(seconds * 1000)))
+    params.solution_limit = solutions
     routing.CloseModelWithParameters(params)
     start = routing.ReadAssignmentFromRoutes(routes, True)
     solution = routing.SolveFromAssignmentWithParameters(start, params)

@@ -10,7 +10,9 @@ import numpy as np
 __all__ = ["MtspPlan", "Objective", "Solver", "distance_matrix"]
 
 Solver = Literal["ga", "ortools"]
+"""``ga``: the paper's genetic algorithm; ``ortools``: the strong solver."""
 Objective = Literal["minsum", "minmax"]
+"""``minsum``: the total distance (the paper's); ``minmax``: the longest tour."""
 
 
 @dataclass(frozen=True, eq=False)

@@ -9,11 +9,24 @@ from typing import Any
 import numpy as np
 
 from sarlink.mtsp.ga import solve_ga
-from sarlink.mtsp.ortools import ORTOOLS_TIME_LIMIT, solve_ortools
+from sarlink.mtsp.ortools import ORTOOLS_SOLUTIONS, solve_ortools
 from sarlink.mtsp.plan import MtspPlan, Objective, Solver
-from sarlink.mtsp.ruin import solve_minmax
+from sarlink.mtsp.ruin import ruin_steps, solve_minmax
 
-__all__ = ["solve"]
+__all__ = ["budget_of", "solve"]
+
+
+def budget_of(solver: Solver, objective: Objective, points: int, salesmen: int,
+              iterations: int, budget: int | None = None) -> int:
+    """The search budget a solve spends, the only thing besides its inputs and seed that
+    shapes a plan: the GA's ``iterations``; the strong solver's ``budget``, or by default
+    :data:`~sarlink.mtsp.ortools.ORTOOLS_SOLUTIONS` solutions of OR-Tools' search (minsum) or
+    :func:`~sarlink.mtsp.ruin.ruin_steps` steps per ruin-and-recreate search (minmax)."""
+    if solver == "ga":
+        return iterations
+    if budget is not None:
+        return budget
+    return ORTOOLS_SOLUTIONS if objective == "minsum" else ruin_steps(points, salesmen)
 
 
 def solve(
@@ -27,7 +40,7 @@ def solve(
     population: int = 80,
     iterations: int = 5000,
     seed: int = 0,
-    time_limit: float = ORTOOLS_TIME_LIMIT,
+    budget: int | None = None,
 ) -> MtspPlan:
     """Plan closed tours from ``depot`` that visit every point exactly once.
 
@@ -53,11 +66,12 @@ def solve(
         GA settings. The population is rounded down to a multiple of 8 (groups of 8). The seed
         is the only source of randomness of the GA and of the min-max search; OR-Tools routing
         (``ortools``, ``minsum``) has no random seed and ignores it.
-    time_limit
-        Strong solver's time, s: OR-Tools' search time under ``minsum``, a cap on the min-max
-        search, which ends at its iteration budget first on the paper's grid. A search cut by
-        time may end at a different plan on a faster or slower machine; the GA does not depend
-        on time.
+    budget
+        The strong solver's budget (``solver="ortools"``): under ``minsum`` the solutions
+        OR-Tools' guided local search may generate, under ``minmax`` the steps of each of the
+        three ruin-and-recreate searches; ``None`` means the default of :func:`budget_of`.
+        No solver stops at a time: a plan is a function of its arguments only, the same on
+        every machine however busy (``seconds`` is the one field that varies).
     """
     pts = np.asarray(points, dtype=float)
     if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) == 0:
@@ -80,17 +94,19 @@ def solve(
     _check_int("population", population, 8, None)
     _check_int("iterations", iterations, 1, None)
     _check_int("seed", seed, 0, None)
-    if not (math.isfinite(time_limit) and time_limit > 0):
-        raise ValueError(f"time_limit must be a finite number of seconds > 0, got {time_limit}")
+    if budget is not None:
+        _check_int("budget", budget, 1, None)
+    steps = budget_of(solver, objective, k, salesmen, iterations, budget)
 
     start = time.perf_counter()
     if solver == "ga":
         tours, history = solve_ga(pts, dep, salesmen, objective, min_cells,
                                   population // 8 * 8, iterations, seed)
     elif objective == "minmax":
-        tours, history = solve_minmax(pts, dep, salesmen, min_cells, seed, time_limit), np.empty(0)
+        tours = solve_minmax(pts, dep, salesmen, min_cells, seed, iterations=steps)
+        history = np.empty(0)
     else:
-        tours, history = solve_ortools(pts, dep, salesmen, min_cells, time_limit), np.empty(0)
+        tours, history = solve_ortools(pts, dep, salesmen, min_cells, steps), np.empty(0)
     return MtspPlan(points=pts, depot=dep, tours=tours, min_cells=min_cells, solver=solver,
                     objective=objective, history=history, seconds=time.perf_counter() - start)
 

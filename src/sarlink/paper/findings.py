@@ -105,6 +105,7 @@ class Finding:
 
     @property
     def holds(self) -> bool:
+        """Whether the claim holds (neither contradicted nor undecided)."""
         return self.outcome is Outcome.HOLDS
 
     @property

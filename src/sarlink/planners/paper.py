@@ -12,7 +12,8 @@ from sarlink.planners.base import RoutePlanner, RulePlanner
 if TYPE_CHECKING:
     from sarlink.config import Mission
 
-__all__ = ["CONB_PLANNER", "CONCOV_PLANNER", "COVB_PLANNER", "MTSP", "MTSP_CONB", "PAPER"]
+__all__ = ["CONB_PLANNER", "CONCOV_PLANNER", "COVB_PLANNER", "MTSP", "MTSP_CONB", "MTSP_PLANNERS",
+           "PAPER"]
 
 
 def mtsp_routes(mission: Mission) -> tuple[np.ndarray, ...]:
@@ -39,3 +40,6 @@ CONCOV_PLANNER = RulePlanner("concov", "ConCov", CONCOV, colour="#9467bd", marke
 
 PAPER = (MTSP, COVB_PLANNER, CONB_PLANNER, MTSP_CONB, CONCOV_PLANNER)
 """The paper's planners in the order of its legends."""
+
+MTSP_PLANNERS = (MTSP.name, MTSP_CONB.name)
+"""The planners that fly mTSP plans (``[mtsp]`` settings reach them)."""

@@ -35,6 +35,7 @@ class Estimate:
 
     @classmethod
     def of(cls, candidate: Candidate, tally: Tally, verdict: Verdict) -> Estimate:
+        """The estimate of ``candidate`` from its runs' ``tally``, with its Wilson interval."""
         lo, hi = tally.interval()
         return cls(candidate.drones, candidate.value, tally.runs, tally.successes, tally.p, lo,
                    hi, tally.mission_time, verdict)
@@ -88,6 +89,9 @@ class PlannerAnswer:
 
 @dataclass(frozen=True)
 class DesignAnswer:
+    """What :func:`sarlink.design` found: per planner its smallest team and setting, the
+    recommendation, and the runs it took."""
+
     request: DesignRequest
     planners: tuple[PlannerAnswer, ...]
     recommended: int | None
@@ -102,6 +106,8 @@ class DesignAnswer:
 
     @property
     def recommendation(self) -> PlannerAnswer | None:
+        """The planner recommended (the smallest team overall), or None if none reaches
+        ``ps``."""
         return None if self.recommended is None else self.planners[self.recommended]
 
     @property

@@ -71,6 +71,8 @@ class Variant:
 
     @property
     def setting(self) -> Setting | None:
+        """The setting tuned for this planner (ConCov's alpha, mTSP-ConB's nr), unless it is
+        one of the fixed parameters."""
         setting = SETTINGS.get(self.planner)
         if setting is None or setting.name in dict(self.fixed):
             return None
@@ -78,6 +80,7 @@ class Variant:
 
     @property
     def label(self) -> str:
+        """The planner's label with the fixed parameters, for tables."""
         extra = ", ".join(f"{k}={v}" for k, v in self.fixed)
         name = get_planner(self.planner).label
         return f"{name} ({extra})" if extra else name

@@ -121,6 +121,8 @@ class DesignRequest(Checked):
                 for values in itertools.product(*self.options.values())]
 
     def schedule(self) -> Schedule:
+        """When a candidate is looked at: ``first_runs``, then doubling up to
+        ``candidate_runs``."""
         return Schedule(self.first_runs, self.candidate_runs)
 
     @property

@@ -33,18 +33,22 @@ class Tally:
 
     @classmethod
     def empty(cls) -> Tally:
+        """No runs yet."""
         return cls(np.zeros(0, dtype=bool), np.zeros(0))
 
     @property
     def runs(self) -> int:
+        """Runs counted."""
         return len(self.success)
 
     @property
     def successes(self) -> int:
+        """Runs whose BS was notified by ``t_d``."""
         return int(np.count_nonzero(self.success))
 
     @property
     def p(self) -> float:
+        """The success rate, NaN with no runs."""
         return self.successes / self.runs if self.runs else float("nan")
 
     def interval(self) -> tuple[float, float]:

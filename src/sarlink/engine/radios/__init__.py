@@ -5,15 +5,17 @@ from __future__ import annotations
 
 from sarlink.config import ConfigError
 from sarlink.engine.hooks import RadioModel, python_function
-from sarlink.engine.radios import disc, shadowing
+from sarlink.engine.radios import lognormal
 from sarlink.entrypoints import discover
 
 __all__ = ["DISC", "SHADOWING", "broken_radios", "get_radio", "radio_names", "radio_origin",
            "radios_in_code", "register_radio"]
 
-DISC = RadioModel("disc", disc.init, disc.update, disc.nominal, static=True)
-"""Eq. 4: linked within r_c."""
-SHADOWING = RadioModel("shadowing", shadowing.init, shadowing.update, shadowing.nominal)
+DISC = RadioModel("disc", lognormal.init, lognormal.update, lognormal.nominal,
+                  static=lognormal.static)
+"""Eq. 4: linked within r_c (the model below with ``sigma = 0``: one kernel for both)."""
+SHADOWING = RadioModel("shadowing", lognormal.init, lognormal.update, lognormal.nominal,
+                       static=lognormal.static)
 """Eq. 13: log-normal fades per link, redrawn every coherence time."""
 
 

@@ -1,0 +1,227 @@
+"""The mission flags: one table that every command taking mission flags builds on.
+
+A row of :data:`FLAGS` declares a flag once: its name, its type, its help, the mission
+parameter it sets (its range is that parameter's, read from the mission model) and the
+commands that take it. :func:`mission_flags` adds a command's rows to it as Typer options, in a
+"Mission" panel of its ``--help``, and hands the command a :class:`MissionFlags` with what the
+user typed; :meth:`MissionFlags.mission` builds the mission, and every error about a value
+names the flag as the user typed it (``--td (timing.horizon): ...``).
+
+Adding a flag is one row. A flag that sets no single mission parameter (``--config``,
+``--reading``; say a polygon file) has ``param=None`` and is read by
+:meth:`MissionFlags.mission` itself.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+import re
+import typing
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Annotated, Any, Literal, get_args, get_origin
+
+import typer
+from pydantic import BaseModel
+from pydantic.fields import FieldInfo
+
+from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
+from sarlink.config.mission import Area, Channel, MtspSettings, Readings, Sensing, Team, Timing
+from sarlink.planners import planner_names
+from sarlink.simulation import check_mission
+
+__all__ = ["FLAGS", "Flag", "MissionFlags", "flags_of", "mission_flags"]
+
+ONE_RUN = frozenset({"simulate", "replay"})
+"""The commands that fly one mission (``replay`` with several planners)."""
+PANEL = "Mission"
+"""The ``--help`` panel of the mission flags."""
+
+
+@dataclass(frozen=True)
+class Flag:
+    """One mission flag: how it is typed, what it sets, and which commands take it."""
+
+    name: str
+    """The flag as typed, ``--td``."""
+    type: type
+    """What its value is converted to: ``int``, ``float``, ``str`` or ``Path``."""
+    help: str
+    """What it sets, for ``--help``; the range is added from the parameter."""
+    param: str | None
+    """The flat mission parameter it sets (``horizon``), or None: read by
+    :meth:`MissionFlags.mission` itself."""
+    commands: frozenset[str]
+    """The commands that take it."""
+
+    @property
+    def dest(self) -> str:
+        """Its Python name (Typer's): ``--p-miss`` -> ``p_miss``."""
+        return self.name.removeprefix("--").replace("-", "_")
+
+    @property
+    def range(self) -> str:
+        """The values the mission allows, from the model's constraints: ``> 0``, ``[0, 1]``,
+        ``one of per-pass, per-period``; empty when unconstrained."""
+        return "" if self.param is None else allowed(_field(self.param))
+
+    def option(self) -> Any:
+        """The Typer annotation of its command-line parameter."""
+        allowed_text = f" ({self.range})" if self.range else ""
+        return Annotated[self.type | None, typer.Option(
+            self.name, help=self.help + allowed_text, rich_help_panel=PANEL, show_default=False)]
+
+
+def _field(param: str) -> FieldInfo:
+    models: dict[str, type[BaseModel]] = {
+        "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
+        "readings": Readings, "mtsp": MtspSettings}
+    return models[param_groups()[param]].model_fields[param]
+
+
+def allowed(field: FieldInfo) -> str:
+    """A field's constraints as a reader writes them: ``> 0``, ``[0, 1]``, ``one of a, b``."""
+    if get_origin(field.annotation) is Literal:
+        return "one of " + ", ".join(map(str, get_args(field.annotation)))
+    bounds = {attr: getattr(m, attr) for m in field.metadata
+              for attr in ("gt", "ge", "lt", "le") if getattr(m, attr, None) is not None}
+    if "ge" in bounds and "le" in bounds:
+        return f"[{bounds['ge']}, {bounds['le']}]"
+    signs = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
+    return ", ".join(f"{signs[attr]} {bound}" for attr, bound in bounds.items())
+
+
+def _rows(*rows: tuple[str, type, str, str | None, Iterable[str]]) -> tuple[Flag, ...]:
+    return tuple(Flag(name, kind, help, param, frozenset(commands))
+                 for name, kind, help, param, commands in rows)
+
+
+FLAGS: tuple[Flag, ...] = _rows(
+    # name, type, help, mission parameter, commands
+    ("--planner", str, f"planner: {', '.join(planner_names())}", "planner", {"simulate"}),
+    ("--drones", int, "number of drones N_m", "drones", {*ONE_RUN, "plan"}),
+    ("--rc", float, "communication range r_c, m", "rc", {*ONE_RUN, "design"}),
+    ("--alpha", float, "ConCov coverage weight", "alpha", ONE_RUN),
+    ("--nr", int, "mTSP-ConB: drones flying the plan", "nr", ONE_RUN),
+    ("--td", float, "target duration t_d = horizon, s", "horizon", ONE_RUN),
+    ("--size", float, "side a of the square area, m", "size", {"design", "plan"}),
+    ("--r", float, "sensing range r (the mTSP cell side), m", "r", {*ONE_RUN, "design", "plan"}),
+    ("--speed", float, "flight speed V_m, m/s", "speed", {"plan"}),
+    ("--p-miss", float, "miss probability per look", "p_miss", {*ONE_RUN, "design"}),
+    ("--look", str, "when a drone looks", "look", {*ONE_RUN, "design"}),
+    ("--shadowing-sigma", float, "log-normal shadowing sigma, dB", "sigma",
+     {*ONE_RUN, "design"}),
+    ("--pathloss-exponent", float, "path-loss exponent n", "pathloss_exponent",
+     {*ONE_RUN, "design"}),
+    ("--stop", str, "end the run at", "stop", ONE_RUN),
+    ("--on-detect", str, "what a drone does once it knows where the target is: keep its plan "
+     "(the paper) or report (fly to the BS)", "on_detect", ONE_RUN),
+    ("--solver", str, "mTSP solver: ga (the paper's) or ortools (the strong one)", "solver",
+     {"plan"}),
+    ("--objective", str, "mTSP objective: minsum (total distance, the paper's) or minmax "
+     "(longest tour)", "objective", {"plan"}),
+    ("--min-cells", int, "minimum cells per drone (default floor(cells / drones))",
+     "min_cells", {"plan"}),
+    ("--seed", int, "seed of the plan search (the GA, or the min-max search)", "plan_seed",
+     {"plan"}),
+    ("--population", int, "GA population", "population", {"plan"}),
+    ("--iterations", int, "GA iterations", "iterations", {"plan"}),
+    ("--reading", str, f"a named reading of what the paper leaves open ({', '.join(READINGS)}; "
+     "docs/model.md); it overrides the config's readings table, flags override both", None,
+     ONE_RUN),
+    ("--config", Path, "mission TOML; flags override it", None,
+     {*ONE_RUN, "design", "plan"}),
+)
+"""Every mission flag of every command. Range and help's allowed values come from the
+mission model, so a flag never states a range of its own."""
+
+
+def flags_of(command: str) -> tuple[Flag, ...]:
+    """The rows of ``command``, in the table's order."""
+    return tuple(flag for flag in FLAGS if command in flag.commands)
+
+
+@dataclass(frozen=True)
+class MissionFlags:
+    """The mission flags a user typed (values not None), by row."""
+
+    given: tuple[tuple[Flag, Any], ...]
+
+    def value(self, name: str) -> Any:
+        """The value of flag ``name`` (``--config``), or None if it was not typed."""
+        return next((value for flag, value in self.given if flag.name == name), None)
+
+    def mission(self, base: Mission | None = None) -> Mission:
+        """The mission: ``base`` (or ``--config``'s file, or the paper's defaults), then
+        ``--reading``, then the flags that set parameters. An error about a value names the
+        flag the user typed."""
+        config = self.value("--config")
+        if base is None:
+            try:
+                base = Mission.from_toml(config) if config is not None else Mission()
+            except ConfigError as exc:
+                raise ConfigError(f"--config {exc}") from None
+        reading = self.value("--reading")
+        if reading is not None:
+            try:
+                base = base.replace(**get_reading(reading).choices)
+            except ConfigError as exc:
+                raise ConfigError(f"--reading: {exc}") from None
+        params = {flag: value for flag, value in self.given if flag.param is not None}
+        try:
+            mission = base.replace(**{str(flag.param): value for flag, value in params.items()})
+            check_mission(mission)  # the planner and radio model by name, plug-ins loaded
+            return mission
+        except ConfigError as exc:
+            raise ConfigError(_named(str(exc), params)) from None
+
+
+def _named(message: str, params: dict[Flag, Any]) -> str:
+    """``message`` with each ``group.param`` of a typed flag written ``--flag (group.param)``."""
+    groups = param_groups()
+    for flag in params:
+        assert flag.param is not None
+        dotted = f"{groups[flag.param]}.{flag.param}"
+        message = re.sub(rf"(?<![\w.-]){re.escape(dotted)}(?!\w)", f"{flag.name} ({dotted})",
+                         message)
+    return message
+
+
+def mission_flags(command: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """Give a command function the mission flags of ``command``.
+
+    The function takes a parameter ``flags: MissionFlags`` instead of one per flag; its
+    signature, as Typer reads it, has that parameter replaced by the rows of
+    :func:`flags_of`. A row whose name is also one of the command's own parameters is an
+    error at import.
+    """
+    rows = flags_of(command)
+
+    def decorate(func: Callable[..., Any]) -> Callable[..., Any]:
+        signature = inspect.signature(func, eval_str=True)
+        own = [p for name, p in signature.parameters.items() if name != "flags"]
+        clash = {p.name for p in own} & {flag.dest for flag in rows}
+        if clash or "flags" not in signature.parameters:
+            raise TypeError(f"{func.__name__}: needs a 'flags' parameter and no parameter "
+                            f"named like a mission flag ({', '.join(sorted(clash))})")
+        added = [inspect.Parameter(flag.dest, inspect.Parameter.KEYWORD_ONLY, default=None,
+                                   annotation=flag.option()) for flag in rows]
+
+        @functools.wraps(func)
+        def command_function(*args: Any, **kwargs: Any) -> Any:
+            values = [(flag, kwargs.pop(flag.dest, None)) for flag in rows]
+            given = tuple((flag, value) for flag, value in values if value is not None)
+            return func(*args, flags=MissionFlags(given), **kwargs)
+
+        command_function.__signature__ = signature.replace(  # type: ignore[attr-defined]
+            parameters=[*(p.replace(kind=inspect.Parameter.KEYWORD_ONLY) for p in own),
+                        *added])
+        hints = typing.get_type_hints(func, include_extras=True)
+        command_function.__annotations__ = {
+            **{name: hint for name, hint in hints.items() if name != "flags"},
+            **{flag.dest: flag.option() for flag in rows}}
+        return command_function
+
+    return decorate

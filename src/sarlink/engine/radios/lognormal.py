@@ -1,0 +1,72 @@
+"""The paper's radio: log-normal shadowing (Eq. 13), and the disc (Eq. 4) as its case
+``sigma = 0``.
+
+A link exists where the path loss plus a fade ``S`` stays within the budget of the range r_c,
+``10 n log10(d / r_c) + S <= 0``. Every pair's fade is drawn anew each coherence time
+(``channel.coherence``, default t_s), independently per link and of r_c: ``S = sigma * z`` with
+``z`` standard normal, so the draws of a run are the same at every range. With ``sigma = 0``
+nothing is drawn and every threshold is ``r_c²`` for the whole run: the disc, whose links
+never change (a settled team may then jump to the horizon). The two cases are one model, so
+that they compile into one kernel. Planners predict with the shadow-free range r_c.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from sarlink.engine.params import Params
+
+_LN10 = math.log(10.0)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def disc_ranges(rc: float, m: int, mp: int) -> np.ndarray:
+    """Squared link ranges ``rc²`` among the ``m`` nodes; none to the padding."""
+    thr2 = np.zeros((m, mp))
+    thr2[:, :m] = rc * rc
+    return thr2
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> None:
+    """Redraw the per-link squared range: ``10 n log10(d/rc) + S <= 0  <=>  d² <= rc² 10^(-S/5n)``.
+
+    With ``S = 0`` the factor is exactly 1, so ``sigma = 0`` is the disc model bit for bit.
+    """
+    m = thr2.shape[0]
+    rc2 = p.rc * p.rc
+    scale = -_LN10 / (5.0 * p.pathloss_exponent)
+    for a in range(m):
+        for b in range(a + 1, m):
+            s = p.sigma * rng.standard_normal()
+            v = rc2 * math.exp(scale * s)
+            thr2[a, b] = v
+            thr2[b, a] = v
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def init(p: Params, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
+    """The shadow-free ranges ``r_c²``; the fades are drawn from step 0 (:func:`update`)."""
+    return disc_ranges(p.rc, m, mp)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def update(thr2: np.ndarray, p: Params, rp: np.ndarray, k: int, rng: np.random.Generator) -> None:
+    """New fades every coherence time (none with ``sigma = 0``)."""
+    if p.sigma > 0.0 and k % p.coherence_steps == 0:
+        draw_shadowing(thr2, p, rng)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def nominal(p: Params, rp: np.ndarray) -> float:
+    """The shadow-free range: a drone cannot foresee fading."""
+    return p.rc
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def static(p: Params, rp: np.ndarray) -> bool:
+    """Whether the links never change: the disc, ``sigma = 0``."""
+    return p.sigma == 0.0
