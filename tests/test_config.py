@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from sarlink import ConfigError, Mission, planner_names
+from sarlink import ConfigError, Mission
 
 
 def test_defaults_are_the_papers_table_3() -> None:
@@ -27,7 +27,6 @@ def test_defaults_are_the_papers_table_3() -> None:
         ({"bs": (5000.0, 10.0)}, "area", "inside the area"),
         ({"dt": 3.0}, "timing.dt", "at most timing.ts"),
         ({"horizon": 10.5}, "timing.horizon", "multiple of timing.dt"),
-        ({"planner": "astar"}, "team.planner", f"one of {', '.join(planner_names())}"),
         ({"look": "sometimes"}, "sensing.look", "per-pass"),
         ({"speed": float("nan")}, "team.speed", "finite"),
         ({"sigma": 50.0}, "channel.sigma", "less than or equal to 30"),

@@ -75,7 +75,6 @@ def reference(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, pd.DataFr
     ({"sed": 1}, ["sed", "Extra inputs"]),
     ({"mission": {"team": {"drones": 0}}}, ["mission.team.drones"]),
     ({"grid": {"drones": [4, 0]}}, ["grid point drones=0", "team.drones"]),
-    ({"grid": {"planner": ["covb", "nope"]}}, ["grid point planner='nope'", "team.planner"]),
     ({"grid": {"rc": [500, 500.0]}}, ["rc=500.0", "same mission"]),
 ])
 def test_invalid_experiments_name_the_field(changes: dict[str, Any], expected: list[str]) -> None:
@@ -83,6 +82,15 @@ def test_invalid_experiments_name_the_field(changes: dict[str, Any], expected: l
         small(**changes)
     for part in expected:
         assert part in str(err.value)
+
+
+def test_an_unknown_planner_is_refused_before_a_sweep_starts(tmp_path: Path) -> None:
+    """Planner names are checked where work starts (plug-ins are loaded by then), naming the
+    grid point, and nothing is written."""
+    with pytest.raises(ConfigError, match=r"grid point planner='nope', rc=500\.0: "
+                       r"team\.planner: unknown planner 'nope'"):
+        sweep(small(grid={"planner": ["covb", "nope"], "rc": [500.0]}), tmp_path / "out")
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.parquet"))
 
 
 def test_experiment_file_reads_like_the_dict(tmp_path: Path) -> None:

@@ -274,6 +274,22 @@ def _progress_bar(enabled: bool) -> Progress:
     )
 
 
+def _check_names(experiment: Experiment) -> None:
+    """Raise a :class:`ConfigError` naming the experiment's key (``mission.team.planner`` or
+    a grid point) unless every planner and radio model it names is known."""
+    try:
+        check_mission(experiment.mission)
+    except ConfigError as exc:
+        if not {"planner", "radio"} & set(experiment.grid):
+            raise ConfigError(f"mission.{exc}") from None
+    for params, mission in experiment.points():
+        try:
+            check_mission(mission)
+        except ConfigError as exc:
+            point = ", ".join(f"{k}={v!r}" for k, v in params.items())
+            raise ConfigError(f"grid point {point}: {exc}") from None
+
+
 def sweep(experiment: Experiment, out_dir: str | Path, *, workers: int | None = None,
           scheduler: str | None = None, dask_local: bool = False,
           progress: bool = True) -> pd.DataFrame:
@@ -316,8 +332,7 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
     _check(workers, scheduler, dask_local)
     with ExitStack() as stack:
         for experiment, _ in jobs:  # planners and radio models by name, before any work
-            for _, mission in experiment.points():
-                check_mission(mission)
+            _check_names(experiment)
         stores = [stack.enter_context(storage.open_store(out_dir, experiment))
                   for experiment, out_dir in jobs]
         tasks = [task for store, (experiment, _) in zip(stores, jobs, strict=True)

@@ -64,6 +64,7 @@ def decide(k: int, p: Params, obs: Observation, flying: np.ndarray, deciding: np
            vx: np.ndarray, vy: np.ndarray) -> None:
     """Eq. 6's direction for every deciding drone."""
     flying_drones(obs.mode, flying)
+    px, py, hx, hy, near = obs.px, obs.py, obs.hx, obs.hy, obs.near
     for i in range(deciding.shape[0]):
         if deciding[i]:
-            vx[i], vy[i] = covb_force(i, obs.px, obs.py, obs.hx, obs.hy, obs.near, flying, p.r)
+            vx[i], vy[i] = covb_force(i, px, py, hx, hy, near, flying, p.r)
