@@ -53,7 +53,7 @@ browser:
 	fi
 
 lint: $(BIN)/sarlink
-	$(BIN)/ruff check src tests benchmarks docs/hooks.py
+	$(BIN)/ruff check src tests benchmarks examples docs/hooks.py
 	$(BIN)/mypy
 
 test: browser lint

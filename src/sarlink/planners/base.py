@@ -129,13 +129,16 @@ class RoutePlanner:
 
     @property
     def kind(self) -> Literal["route"]:
+        """Always ``route``."""
         return "route"
 
     @property
     def rule(self) -> None:
+        """None: no drone runs a distributed rule."""
         return None
 
     def steering(self, mission: Mission) -> Steering:
+        """Every drone's checked route (:func:`checked_routes`)."""
         routes = _call(self.name, self.routes, mission)
         return Steering(rule=None, routes=checked_routes(self.name, routes, mission,
                                                         every_drone=True))
@@ -155,9 +158,11 @@ class RulePlanner:
 
     @property
     def kind(self) -> Literal["rule", "hybrid"]:
+        """``rule``, or ``hybrid`` when some drones fly routes."""
         return "rule" if self.routes is None else "hybrid"
 
     def steering(self, mission: Mission) -> Steering:
+        """The rule, and the checked routes of a hybrid's route drones."""
         if self.routes is None:
             return Steering(rule=self.rule)
         routes = _call(self.name, self.routes, mission)
