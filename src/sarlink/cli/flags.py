@@ -161,16 +161,15 @@ class MissionFlags:
         """The value of flag ``name`` (``--config``), or None if it was not typed."""
         return next((value for flag, value in self.given if flag.name == name), None)
 
-    def mission(self, base: Mission | None = None) -> Mission:
-        """The mission: ``base`` (or ``--config``'s file, or the paper's defaults), then the
-        flags with an ``apply`` (``--reading``), then the flags that set parameters. An error
-        about a value names the flag the user typed."""
+    def mission(self) -> Mission:
+        """The mission: ``--config``'s file (or the paper's defaults), then the flags with an
+        ``apply`` (``--reading``), then the flags that set parameters. An error about a value
+        names the flag the user typed."""
         config = self.value("--config")
-        if base is None:
-            try:
-                base = Mission.from_toml(config) if config is not None else Mission()
-            except ConfigError as exc:
-                raise ConfigError(f"--config {exc}") from None
+        try:
+            base = Mission.from_toml(config) if config is not None else Mission()
+        except ConfigError as exc:
+            raise ConfigError(f"--config {exc}") from None
         for flag, value in self.given:
             if flag.apply is not None:
                 try:
