@@ -16,6 +16,7 @@ UV_VERSION := uv>=0.9,<1
 LOCK := requirements.lock
 EXTRAS := --extra dev --extra docs
 BROWSER := /usr/bin/chromium /usr/bin/chromedriver
+export UV_PYTHON_DOWNLOADS := never
 
 .PHONY: demo test lint browser docs lock bench clean
 

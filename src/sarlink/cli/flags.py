@@ -7,8 +7,9 @@ commands that take it. :func:`mission_flags` adds a command's rows to it as Type
 user typed; :meth:`MissionFlags.mission` builds the mission, and every error about a value
 names the flag as the user typed it (``--td (timing.horizon): ...``).
 
-Adding a flag is one row. A flag that sets no single mission parameter (``--config``,
-``--reading``; say a polygon file) has ``param=None`` and is read by
+Adding a flag is one row. A flag that sets no single mission parameter (``--reading``; say a
+polygon file) has ``param=None`` and an ``apply`` function that makes the mission with it;
+``--config``, the mission every flag starts from, is the one read by
 :meth:`MissionFlags.mission` itself.
 """
 
@@ -55,6 +56,9 @@ class Flag:
     :meth:`MissionFlags.mission` itself."""
     commands: frozenset[str]
     """The commands that take it."""
+    apply: Callable[[Mission, Any], Mission] | None = None
+    """For a flag with no ``param``: the mission with the flag's value applied (a
+    :class:`ConfigError` it raises is reported with the flag's name)."""
 
     @property
     def dest(self) -> str:
@@ -93,9 +97,14 @@ def allowed(field: FieldInfo) -> str:
     return ", ".join(f"{signs[attr]} {bound}" for attr, bound in bounds.items())
 
 
-def _rows(*rows: tuple[str, type, str, str | None, Iterable[str]]) -> tuple[Flag, ...]:
-    return tuple(Flag(name, kind, help, param, frozenset(commands))
-                 for name, kind, help, param, commands in rows)
+def _rows(*rows: tuple[str, type, str, str | None, Iterable[str]] | Flag) -> tuple[Flag, ...]:
+    return tuple(row if isinstance(row, Flag) else
+                 Flag(row[0], row[1], row[2], row[3], frozenset(row[4])) for row in rows)
+
+
+def _read(mission: Mission, name: str) -> Mission:
+    """``mission`` with the choices of the reading ``name``."""
+    return mission.replace(**get_reading(name).choices)
 
 
 FLAGS: tuple[Flag, ...] = _rows(
@@ -128,9 +137,9 @@ FLAGS: tuple[Flag, ...] = _rows(
      {"plan"}),
     ("--population", int, "GA population", "population", {"plan"}),
     ("--iterations", int, "GA iterations", "iterations", {"plan"}),
-    ("--reading", str, f"a named reading of what the paper leaves open ({', '.join(READINGS)}; "
-     "docs/model.md); it overrides the config's readings table, flags override both", None,
-     ONE_RUN),
+    Flag("--reading", str, f"a named reading of what the paper leaves open "
+         f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
+         "flags override both", None, ONE_RUN, apply=_read),
     ("--config", Path, "mission TOML; flags override it", None,
      {*ONE_RUN, "design", "plan"}),
 )
@@ -153,22 +162,21 @@ class MissionFlags:
         """The value of flag ``name`` (``--config``), or None if it was not typed."""
         return next((value for flag, value in self.given if flag.name == name), None)
 
-    def mission(self, base: Mission | None = None) -> Mission:
-        """The mission: ``base`` (or ``--config``'s file, or the paper's defaults), then
-        ``--reading``, then the flags that set parameters. An error about a value names the
-        flag the user typed."""
+    def mission(self) -> Mission:
+        """The mission: ``--config``'s file (or the paper's defaults), then the flags with an
+        ``apply`` (``--reading``), then the flags that set parameters. An error about a value
+        names the flag the user typed."""
         config = self.value("--config")
-        if base is None:
-            try:
-                base = Mission.from_toml(config) if config is not None else Mission()
-            except ConfigError as exc:
-                raise ConfigError(f"--config {exc}") from None
-        reading = self.value("--reading")
-        if reading is not None:
-            try:
-                base = base.replace(**get_reading(reading).choices)
-            except ConfigError as exc:
-                raise ConfigError(f"--reading: {exc}") from None
+        try:
+            base = Mission.from_toml(config) if config is not None else Mission()
+        except ConfigError as exc:
+            raise ConfigError(f"--config {exc}") from None
+        for flag, value in self.given:
+            if flag.apply is not None:
+                try:
+                    base = flag.apply(base, value)
+                except ConfigError as exc:
+                    raise ConfigError(f"{flag.name}: {exc}") from None
         params = {flag: value for flag, value in self.given if flag.param is not None}
         try:
             mission = base.replace(**{str(flag.param): value for flag, value in params.items()})

@@ -51,6 +51,7 @@ def _ortools_search(
     ``ticks`` until it has generated ``solutions`` solutions; a count dimension bounds every
     tour below by ``min_cells`` nodes."""
     from ortools.constraint_solver import pywrapcp, routing_enums_pb2
+    from ortools.util import optional_boolean_pb2
 
     nodes = len(ticks)
     manager = pywrapcp.RoutingIndexManager(nodes, salesmen, 0)
@@ -67,6 +68,11 @@ def _ortools_search(
     params.local_search_metaheuristic = (
         routing_enums_pb2.LocalSearchMetaheuristic.GUIDED_LOCAL_SEARCH)
     params.solution_limit = solutions
+    # the neighbourhoods searched by a completion search stop at a time (lns_time_limit); they
+    # are off by default, and kept off so that a plan never depends on the machine's speed
+    operators = params.local_search_operators
+    for name in ("use_path_lns", "use_full_path_lns", "use_tsp_lns", "use_inactive_lns"):
+        setattr(operators, name, optional_boolean_pb2.BOOL_FALSE)
     routing.CloseModelWithParameters(params)
     start = routing.ReadAssignmentFromRoutes(routes, True)
     solution = routing.SolveFromAssignmentWithParameters(start, params)
