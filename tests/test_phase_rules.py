@@ -18,7 +18,10 @@ from hypothesis import strategies as st
 
 from phase_inputs import BS, component, members, node_arrays, pack, padded, params, words
 from sarlink.engine.geometry import FAR
+from sarlink.engine.graph import bs_component, links
+from sarlink.engine.observation import Observation
 from sarlink.engine.params import LANDED, RETURNING, SEARCHING, Params
+from sarlink.engine.rules import conb, concov, covb
 from sarlink.engine.rules.conb import check_continuously, conb_headings, predict_routes
 from sarlink.engine.rules.concov import blend
 from sarlink.engine.rules.covb import covb_force, flying_drones
@@ -415,3 +418,47 @@ def test_blend_of_cancelling_terms_keeps_the_heading_or_follows_conb(
     """CovB's term east, ConB's west, α = 0.5: Eq. 12 is exactly zero."""
     assert blend(params(alpha=0.5, concov_fallback=fallback), 1.0, 0.0, -1.0, 0.0,
                  0.0, 1.0) == want
+
+
+# -- the hooks, composed ----------------------------------------------------------------------
+
+
+def _observation(seed: int, n: int, p: Params) -> Observation:
+    """A random team around the BS observed as the kernel observes it (links within r_c,
+    pairs within r, the BS's component)."""
+    rng = np.random.default_rng(seed)
+    xy = [(float(x), float(y)) for x, y in BS + rng.uniform(-900.0, 900.0, (n + 1, 2))]
+    xy.insert(n, BS)
+    px, py, pz = node_arrays(xy, n)
+    angles = rng.uniform(-math.pi, math.pi, n)
+    m, mp = n + 2, padded(n + 2)
+    thr2 = np.zeros((m, mp))
+    thr2[:, :m] = p.rc * p.rc
+    adj = np.zeros((m, words(m)), dtype=np.uint64)
+    near = adj.copy()
+    links(px, py, pz, thr2, adj, p.r * p.r, near, True)
+    routed, spread = np.zeros(words(m), dtype=np.uint64), np.zeros(words(m), dtype=np.uint64)
+    bs_component(adj, n, routed, np.empty(m, dtype=np.int64))
+    mode = np.where(rng.random(n) < 0.2, LANDED, SEARCHING).astype(np.int8)
+    return Observation(px, py, pz, np.cos(angles), np.sin(angles), mode,
+                       np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.int64),
+                       np.zeros(n, dtype=np.bool_), adj, near, routed, spread, p.rc)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_concov_at_the_ends_of_alpha_decides_as_covb_or_conb(seed: int) -> None:
+    """Eq. 12 at α = 1 (0) is CovB's (ConB's) direction, bit for bit, and only the deciding
+    drones get one (ConB predicting a sensing period ahead)."""
+    n = 12
+    for alpha, pure in ((1.0, covb), (0.0, conb)):
+        p = params(alpha=alpha, rc=450.0, conb_check=0)
+        obs = _observation(seed, n, p)
+        deciding = obs.mode == SEARCHING
+        deciding[::3] = False
+        got, want = (np.full(n, 7.0), np.full(n, 7.0)), (np.full(n, 7.0), np.full(n, 7.0))
+        concov.decide(5, p, obs, concov.prepare(p, obs), deciding, *got)
+        pure.decide(5, p, obs, pure.prepare(p, obs), deciding, *want)
+        np.testing.assert_array_equal(got, want)
+        assert (got[0][~deciding] == 7.0).all()
+        assert (np.hypot(*got)[deciding] == pytest.approx(1.0))
+        assert (np.abs(got[0] - obs.hx)[deciding] > 1e-9).any()  # some drone did turn
