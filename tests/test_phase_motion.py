@@ -285,7 +285,10 @@ def test_every_kind_of_drone_moves_as_the_model_says() -> None:
 def test_no_drone_moves_farther_than_v_dt_and_free_flyers_move_exactly_that(
         drones: list[tuple[float, float, float, int, bool]]) -> None:
     """Route drones follow a route of two waypoints; the others fly their headings (home or
-    to the BS when returning or reporting, as the schedule set them)."""
+    to the BS when returning or reporting, as the schedule set them). A route drone never
+    returns (the schedule sends only distributed drones home)."""
+    drones = [(x, y, a, SEARCHING if routed and was == RETURNING else was, routed)
+              for x, y, a, was, routed in drones]
     n = len(drones)
     px, py = np.array([d[0] for d in drones]), np.array([d[1] for d in drones])
     hx, hy = np.cos([d[2] for d in drones]), np.sin([d[2] for d in drones])
