@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from scipy import stats
 
 from phase_inputs import padded, params
-from sarlink.engine.radios import DISC, SHADOWING, disc, shadowing
+from sarlink.engine.radios import DISC, SHADOWING, lognormal
 
 EMPTY = np.zeros(0)  # the built-in models take no parameter array
 
@@ -22,22 +22,24 @@ EMPTY = np.zeros(0)  # the built-in models take no parameter array
 def test_the_disc_is_rc_squared_between_nodes_and_nothing_to_the_padding(
         m: int, rc: float, k: int) -> None:
     p = params(rc=rc)
-    thr2 = disc.init(p, EMPTY, m, padded(m))
+    thr2 = lognormal.init(p, EMPTY, m, padded(m))
     assert thr2.shape == (m, padded(m))
     assert (thr2[:, :m] == rc * rc).all() and (thr2[:, m:] == 0.0).all()
     rng, twin = np.random.default_rng(k), np.random.default_rng(k)
     before = thr2.copy()
-    disc.update(thr2, p, EMPTY, k, rng)
+    lognormal.update(thr2, p, EMPTY, k, rng)
     np.testing.assert_array_equal(thr2, before)
     assert rng.bit_generator.state == twin.bit_generator.state  # it draws nothing
-    assert disc.nominal(p, EMPTY) == rc
-    assert DISC.static and not SHADOWING.static
+    assert lognormal.nominal(p, EMPTY) == rc
+    assert lognormal.static(p, EMPTY)  # sigma = 0: the links never change
+    assert not lognormal.static(p._replace(sigma=3.0), EMPTY)
+    assert DISC.hooks() == SHADOWING.hooks()  # one model, one kernel
 
 
 def _fades(m: int, seed: int, p: object) -> np.ndarray:
     """Shadowing's thresholds after the draw of step 0."""
-    thr2 = shadowing.init(p, EMPTY, m, padded(m))
-    shadowing.update(thr2, p, EMPTY, 0, np.random.default_rng(seed))
+    thr2 = lognormal.init(p, EMPTY, m, padded(m))
+    lognormal.update(thr2, p, EMPTY, 0, np.random.default_rng(seed))
     return thr2
 
 
@@ -57,7 +59,7 @@ def test_shadowing_follows_eq_13_for_the_drawn_fades(m: int, rc: float, sigma: f
                                rtol=1e-12)
     np.testing.assert_array_equal(thr2[:, :m], thr2[:, :m].T)
     assert (thr2[:, m:] == 0.0).all()
-    assert shadowing.nominal(p, EMPTY) == rc  # planners cannot foresee the fades
+    assert lognormal.nominal(p, EMPTY) == rc  # planners cannot foresee the fades
     # Eq. 13 at distances around each link's edge
     d = rc * np.exp(np.random.default_rng(seed + 1).uniform(-1.0, 1.0, len(s)))
     budget = 10.0 * exponent * np.log10(d / rc) + s
@@ -67,7 +69,7 @@ def test_shadowing_follows_eq_13_for_the_drawn_fades(m: int, rc: float, sigma: f
 
 def test_zero_sigma_is_the_disc_bit_for_bit() -> None:
     p = params(rc=1234.5, sigma=0.0, pathloss_exponent=3.0)
-    np.testing.assert_array_equal(_fades(12, 3, p), disc.init(p, EMPTY, 12, padded(12)))
+    np.testing.assert_array_equal(_fades(12, 3, p), lognormal.init(p, EMPTY, 12, padded(12)))
 
 
 def test_fades_are_redrawn_only_every_coherence_time() -> None:
@@ -75,11 +77,11 @@ def test_fades_are_redrawn_only_every_coherence_time() -> None:
     generator is drawn from only then (one normal per pair)."""
     m, pairs = 6, 15
     p = params(sigma=4.0, coherence_steps=3)
-    thr2 = shadowing.init(p, EMPTY, m, padded(m))
+    thr2 = lognormal.init(p, EMPTY, m, padded(m))
     rng, twin = np.random.default_rng(8), np.random.default_rng(8)
     previous = thr2.copy()
     for k in range(10):
-        shadowing.update(thr2, p, EMPTY, k, rng)
+        lognormal.update(thr2, p, EMPTY, k, rng)
         redrawn = k % 3 == 0
         if redrawn:
             twin.standard_normal(pairs)
@@ -95,12 +97,12 @@ def test_the_fades_are_normal_with_the_mission_s_sigma(sigma: float, exponent: f
     (fixed seed); the same test tells a sigma 10 % off, so it is not blind."""
     m = 100
     p = params(rc=1000.0, sigma=sigma, pathloss_exponent=exponent, coherence_steps=1)
-    thr2 = shadowing.init(p, EMPTY, m, padded(m))
+    thr2 = lognormal.init(p, EMPTY, m, padded(m))
     rng = np.random.default_rng(2024)
     upper = np.triu_indices(m, 1)
     fades = []
     for k in range(4):
-        shadowing.update(thr2, p, EMPTY, k, rng)
+        lognormal.update(thr2, p, EMPTY, k, rng)
         fades.append(-5.0 * exponent * np.log10(thr2[upper] / 1000.0**2))
     s = np.concatenate(fades)
     assert stats.kstest(s / sigma, "norm").pvalue > 1e-3
