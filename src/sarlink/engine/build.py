@@ -86,8 +86,8 @@ def _sources(rule: DistributedRule | None, radio: RadioModel) -> list[Path]:
 def kernel_digest(rule: DistributedRule | None, radio: RadioModel, text: str) -> str:
     """SHA-256 (16 hex digits) of the generated text and every source it depends on."""
     digest = hashlib.sha256(text.encode())
-    for path in _sources(rule, radio):
-        digest.update(str(path).encode() + b"\0" + path.read_bytes() + b"\0")
+    for path in _sources(rule, radio):  # by content and name: clones share compiled kernels
+        digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:16]
 
 
