@@ -3,8 +3,10 @@ it where Python finds it, and sarlink finds its two planners through its entry p
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -17,12 +19,20 @@ from sarlink.testing import check_planner
 ROOT = Path(__file__).resolve().parents[1]
 
 
+def _installer() -> list[str]:
+    """pip, or uv's pip where the environment has no pip (``make`` creates it with uv)."""
+    if importlib.util.find_spec("pip") is not None:
+        return [sys.executable, "-m", "pip", "install", "--quiet"]
+    uv = shutil.which("uv") or str(ROOT / ".tools" / "bin" / "uv")
+    return [uv, "pip", "install", "--quiet", "--python", sys.executable]
+
+
 @pytest.fixture(scope="module")
 def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """``pip install examples/plugin`` into a folder of its own (not into this environment)."""
     target = tmp_path_factory.mktemp("site")
-    subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", "--no-deps", "--target",
-                    str(target), str(ROOT / "examples" / "plugin")], check=True)
+    subprocess.run([*_installer(), "--no-deps", "--target", str(target),
+                    str(ROOT / "examples" / "plugin")], check=True)
     return target
 
 
