@@ -8,7 +8,7 @@ import typer
 from rich.table import Table
 
 from sarlink.cli.common import console, print_json, user_errors
-from sarlink.engine.radios import broken_radios, get_radio, radio_names, radio_origin
+from sarlink.engine.radios import broken_radios, radio_names, radio_origin
 from sarlink.planners import PAPER_PLANNERS, planner_entries
 from sarlink.planners.registry import broken_plugins
 
@@ -19,8 +19,7 @@ def listing() -> dict[str, Any]:
                  "rule": e.planner.rule.name if e.planner.rule else None,
                  "origin": e.origin, "paper": name in PAPER_PLANNERS}
                 for name, e in planner_entries().items()]
-    radios = [{"name": name, "origin": radio_origin(name), "static": get_radio(name).static}
-              for name in radio_names()]
+    radios = [{"name": name, "origin": radio_origin(name)} for name in radio_names()]
     broken = [{"entry_point": name, "error": why}
               for name, why in {**broken_plugins(), **broken_radios()}.items()]
     return {"planners": planners, "radios": radios, "broken": broken}
