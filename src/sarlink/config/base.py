@@ -24,10 +24,11 @@ class Checked(BaseModel):
     )
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> Self:
-        """Build from nested ``{field: value}`` data; errors name the field."""
+    def from_dict(cls, data: dict[str, Any], folder: Path | None = None) -> Self:
+        """Build from nested ``{field: value}`` data; errors name the field. Files the data
+        names (a mission's area and prior) are read relative to ``folder``."""
         try:
-            return cls.model_validate(data)
+            return cls.model_validate(data, context={"folder": folder})
         except ValidationError as exc:
             raise ConfigError(_describe(cls, exc)) from None
 
@@ -40,7 +41,7 @@ class Checked(BaseModel):
     def from_file_data(cls, path: str | Path, data: dict[str, Any]) -> Self:
         """Build from the data of the file ``path``; errors start with the file's name."""
         try:
-            return cls.from_dict(data)
+            return cls.from_dict(data, Path(path).parent)
         except ConfigError as exc:
             raise ConfigError(f"{path}: {exc}") from None
 

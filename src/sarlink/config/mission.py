@@ -8,11 +8,21 @@ that is what experiment grids and tidy result rows use. Defaults are the paper's
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any, Literal, Self
 
-from pydantic import BaseModel, Field, model_validator
+from pydantic import (
+    BaseModel,
+    Field,
+    SerializerFunctionWrapHandler,
+    ValidationInfo,
+    model_serializer,
+    model_validator,
+)
 
 from sarlink.config.base import Checked, ConfigError
+from sarlink.config.geo import FILE_KEYS, resolve_files
+from sarlink.config.region import Region, check_region
 
 __all__ = [
     "Area",
@@ -20,6 +30,7 @@ __all__ = [
     "Mission",
     "MtspSettings",
     "Readings",
+    "Region",
     "Sensing",
     "Team",
     "Timing",
@@ -27,20 +38,16 @@ __all__ = [
 
 
 class Area(Checked):
-    """The square search area ``[0, size]²`` and the base station (BS) on the ground."""
+    """The square search area ``[0, size]²`` and the base station (BS) on the ground.
+
+    A mission's :class:`Region` may replace the square by a polygon (then ``bs`` is required
+    and ``size`` is unused) and put it on the map.
+    """
 
     size: float = Field(4000.0, gt=0, description="side a of the square area, m")
     bs: tuple[float, float] | None = Field(
         None, description="BS position (x, y), m; None puts it at the centre"
     )
-
-    @model_validator(mode="after")
-    def _bs_inside(self) -> Self:
-        if self.bs is not None:
-            x, y = self.bs
-            if not (0 <= x <= self.size and 0 <= y <= self.size):
-                raise ValueError(f"bs must lie inside the area [0, {self.size}]², got ({x}, {y})")
-        return self
 
     @property
     def bs_xy(self) -> tuple[float, float]:
@@ -193,9 +200,6 @@ MAX_STEPS = 10_000_000
 MAX_RECORDS = 1_000_000
 """Most cumulative records (checkpoints) in one run (the paper's runs have 81)."""
 
-_GROUPS: tuple[str, ...] = ("area", "team", "sensing", "channel", "timing", "readings", "mtsp")
-
-
 class Mission(Checked):
     """One mission: everything a run depends on besides the seed and the run index.
 
@@ -209,9 +213,33 @@ class Mission(Checked):
     timing: Timing = Field(default_factory=Timing)
     readings: Readings = Field(default_factory=Readings)
     mtsp: MtspSettings = Field(default_factory=MtspSettings)
+    region: Region | None = Field(
+        None, description="a polygon area, holes, a target prior and a place on the map "
+        "(sarlink.config.region); None: the paper's square and uniform target")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _read_map_files(cls, data: Any, info: ValidationInfo) -> Any:
+        """``[region]`` naming an area or prior file, or the BS's longitude/latitude: read
+        them (relative to the mission file's folder) into the region they describe."""
+        region = data.get("region") if isinstance(data, dict) else None
+        if not (isinstance(region, dict) and any(key in region for key in FILE_KEYS)):
+            return data
+        folder = (info.context or {}).get("folder") or Path()
+        return resolve_files(data, Path(folder), Area.model_fields["size"].default)
+
+    @model_serializer(mode="wrap")
+    def _without_default_region(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
+        """Leave out ``region`` when it is None: the paper's missions serialise, and so hash
+        (:func:`sarlink.config.mission_hash`, the names of result folders), as before regions."""
+        data: dict[str, Any] = handler(self)
+        if self.region is None:
+            data.pop("region", None)
+        return data
 
     @model_validator(mode="after")
     def _consistent(self) -> Self:
+        self._area_fits()
         t = self.timing
         if t.dt > t.ts:
             raise ValueError(f"timing.dt must be at most timing.ts = {t.ts} s, got {t.dt}")
@@ -234,6 +262,19 @@ class Mission(Checked):
                              f"got {coh}")
         return self
 
+    def _area_fits(self) -> None:
+        region, area = self.region, self.area
+        if region is not None and region.outline is not None and area.bs is None:
+            raise ValueError("area.bs: an area given as a polygon needs the BS's position")
+        if region is None or region.outline is None:
+            x, y = area.bs_xy
+            if not (0 <= x <= area.size and 0 <= y <= area.size):
+                raise ValueError(f"area.bs must lie inside the area [0, {area.size}]², got "
+                                 f"({x}, {y})")
+        problem = check_region(region, area.size, area.bs_xy)
+        if problem:
+            raise ValueError(f"region: {problem}")
+
     # -- construction -------------------------------------------------------------------------
 
     @classmethod
@@ -253,7 +294,7 @@ class Mission(Checked):
     def params(self) -> dict[str, Any]:
         """Every leaf parameter by its unique name (``drones``, ``rc``, ``p_miss``, ...)."""
         flat: dict[str, Any] = {}
-        for group in _GROUPS:
+        for group in flat_groups():
             flat.update(getattr(self, group).model_dump())
         return flat
 
@@ -306,10 +347,13 @@ class Mission(Checked):
         return self.timing.ts if c is None else c
 
 
+def flat_groups() -> dict[str, type[BaseModel]]:
+    """The groups whose fields are flat mission parameters (every group but ``region``)."""
+    return {"area": Area, "team": Team, "sensing": Sensing, "channel": Channel,
+            "timing": Timing, "readings": Readings, "mtsp": MtspSettings}
+
+
 def param_groups() -> dict[str, str]:
     """Flat parameter name -> the group that holds it."""
-    models: dict[str, type[BaseModel]] = {
-        "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "readings": Readings, "mtsp": MtspSettings,
-    }
-    return {field: group for group, model in models.items() for field in model.model_fields}
+    return {field: group for group, model in flat_groups().items()
+            for field in model.model_fields}

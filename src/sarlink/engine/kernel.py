@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import graph, motion, records, sensing
+from sarlink.engine import area, graph, motion, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -53,10 +53,14 @@ RULE_NEAR = False
 def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     pos0: np.ndarray, heading0: np.ndarray, wp: np.ndarray, wp_start: np.ndarray,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
-                    rng_shadow: np.random.Generator, rng_look: np.random.Generator) -> RunRecord:
+                    rng_shadow: np.random.Generator, rng_look: np.random.Generator,
+                    edges: np.ndarray, nav: np.ndarray, far: float) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
+    ``edges`` are the segments of a polygon area's rings (:mod:`sarlink.engine.area`), ``nav``
+    its corners (x, y, distance home, distances to the corners they see) and ``far`` the
+    longest flight home; ``edges`` empty for the paper's square ``[0, p.size]²``.
     ``cp_steps`` are the steps at which the cumulative records are taken. A run stopped early
     (``p.stop``) has NaN records after its last step and a trajectory that ends there. The
     kernel releases the GIL, so that threads (a threaded Dask worker) can simulate at once.
@@ -91,6 +95,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     deciding = np.zeros(n, dtype=np.bool_)
     leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
+    goal_x, goal_y = np.full(n, np.nan), np.full(n, np.nan)  # that point, on a polygon area
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
                       spread, radio_nominal(p, rp))
     ws = rule_prepare(p, obs)
@@ -103,7 +108,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     detector = -1
     routes = wp.shape[0] > 0
     may_settle = radio_static(p, rp) and not p.record  # a recorded run keeps every step
-    home_max = motion.farthest_home(p)
+    polygon = edges.shape[0] > 0
+    home_max = far if polygon else motion.farthest_home(p)
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
@@ -153,7 +159,11 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             any_deciding = rule_due(k, p, obs, ws, deciding)
         if any_deciding:
             rule_decide(k, p, obs, ws, deciding, nhx, nhy)
-        motion.boundary(k, p, px, py, mode, on_route, last_change, nhx, nhy, rng_turn)
+        if polygon:  # the boundary rule on the polygon, and the ways round its holes
+            area.polygon_rules(k, homing, p, px, py, nhx, nhy, mode, on_route, last_change,
+                               edges, nav, rejoin, leave_x, leave_y, goal_x, goal_y, rng_turn)
+        else:
+            motion.boundary(k, p, px, py, mode, on_route, last_change, nhx, nhy, rng_turn)
         hx[:] = nhx
         hy[:] = nhy
         # ---- move ----

@@ -10,6 +10,8 @@ import numpy as np
 from numba.core.errors import NumbaError
 
 from sarlink.config import ConfigError, Mission
+from sarlink.config.region import area_polygon, is_polygon
+from sarlink.engine.area import edge_array
 from sarlink.engine.build import kernel_for
 from sarlink.engine.codes import (
     CHECK_CODES,
@@ -23,6 +25,7 @@ from sarlink.engine.codes import (
     STOP_CODES,
 )
 from sarlink.engine.params import Params
+from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
 from sarlink.engine.records import RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
@@ -43,6 +46,13 @@ class Prepared:
     waypoints: np.ndarray
     wp_start: np.ndarray
     cp_steps: np.ndarray
+    edges: np.ndarray
+    """A polygon area's edges (:mod:`sarlink.engine.area`); empty for the square, whose walls
+    the square's boundary rule (``params.size``) keeps."""
+    nav: np.ndarray
+    """A polygon area's corners, their distances home and to each other."""
+    far: float
+    """A polygon area's longest flight home, m (an upper bound)."""
 
     @classmethod
     def build(cls, mission: Mission, steering: Steering) -> Prepared:
@@ -58,6 +68,12 @@ class Prepared:
         wp_start[1:] = np.cumsum([len(r) for r in routes])
         waypoints = np.concatenate([np.asarray(r, dtype=float).reshape(-1, 2) for r in routes])
         bs_x, bs_y = mission.area.bs_xy
+        edges, nav, far = np.empty((0, 4)), np.empty((0, 3)), 0.0
+        if is_polygon(mission.region):
+            polygon = area_polygon(mission.region, mission.area.size)
+            rings = [polygon.exterior.coords, *(h.coords for h in polygon.interiors)]
+            edges = edge_array([np.asarray(ring) for ring in rings])
+            nav, far = Navigation(polygon).home((bs_x, bs_y))
         t, r = mission.timing, mission.readings
         cp_steps = np.array(mission.checkpoint_steps(), dtype=np.int64)
         params = Params(
@@ -80,7 +96,7 @@ class Prepared:
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
                    distributed=distributed, waypoints=waypoints, wp_start=wp_start,
-                   cp_steps=cp_steps)
+                   cp_steps=cp_steps, edges=edges, nav=nav, far=far)
 
     @property
     def kernel(self) -> Any:
@@ -98,7 +114,8 @@ class Prepared:
         return (self.params._replace(record=trajectory), self.radio_params,
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
                 takeoff_headings(scenario, self.distributed), self.waypoints, self.wp_start,
-                self.cp_steps, streams.turn, streams.shadow, streams.look)
+                self.cp_steps, streams.turn, streams.shadow, streams.look, self.edges, self.nav,
+                self.far)
 
     def record(self, streams: Streams, scenario: Scenario, *,
                trajectory: bool = False) -> RunRecord:

@@ -6,8 +6,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from sarlink.config import ConfigError, Mission
+from sarlink.config.region import EDGE, area_polygon, is_polygon
+from sarlink.engine.targets import target_prior
 
 
 @dataclass(frozen=True)
@@ -28,23 +31,36 @@ class Scenario:
         """Raise :class:`ConfigError` if this scenario does not fit ``mission``."""
         size, n = mission.area.size, mission.team.drones
         x, y = self.target
-        if not (0 <= x <= size and 0 <= y <= size):
-            raise ConfigError(f"scenario.target must lie inside [0, {size}]², got ({x}, {y})")
+        region = mission.region
+        square = not is_polygon(region)
+        where = f"[0, {size}]²" if square else "the area (its polygon, out of its holes)"
+        area = None if square else area_polygon(region, size)
+        if not _inside(area, size, np.array([[x, y]])):
+            raise ConfigError(f"scenario.target must lie inside {where}, got ({x}, {y})")
         for name, arr, shape in (("positions", self.positions, (n, 2)),
                                  ("headings", self.headings, (n,))):
             if arr is not None and np.shape(arr) != shape:
                 raise ConfigError(f"scenario.{name} must have shape {shape}, "
                                   f"got {np.shape(arr)}")
-        if self.positions is not None:
-            pos = np.asarray(self.positions)
-            if (pos < 0).any() or (pos > size).any():
-                raise ConfigError(f"scenario.positions must lie inside [0, {size}]²")
+        if self.positions is not None and not _inside(area, size, np.asarray(self.positions)):
+            raise ConfigError(f"scenario.positions must lie inside {where}")
+
+
+def _inside(area: shapely.Polygon | None, size: float, xy: np.ndarray) -> bool:
+    if area is None:
+        return bool(((xy >= 0) & (xy <= size)).all())
+    return bool(shapely.dwithin(area, shapely.points(xy), EDGE).all())
 
 
 def draw_scenario(mission: Mission, rng: np.random.Generator) -> Scenario:
-    """A uniform target in the area and a uniform take-off heading offset."""
-    size = mission.area.size
-    x, y = rng.random() * size, rng.random() * size
+    """A target from the mission's prior (uniform in the square by default, drawn as the
+    paper's runs always were) and a uniform take-off heading offset."""
+    prior = target_prior(mission)
+    if prior is None:
+        size = mission.area.size
+        x, y = rng.random() * size, rng.random() * size
+    else:
+        x, y = prior.draw(rng)
     return Scenario(target=(x, y), heading_offset=rng.random() * 2 * math.pi)
 
 

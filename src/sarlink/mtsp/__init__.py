@@ -17,6 +17,7 @@ Every solver stops at a budget (GA iterations, OR-Tools solutions, ruin-and-recr
 """
 
 from sarlink.mtsp.cache import CACHE_VERSION, cache_dir, clear_cache, plan_for, solve_for
+from sarlink.mtsp.clip import area_cells, flyable
 from sarlink.mtsp.grid import grid_cells
 from sarlink.mtsp.ortools import ORTOOLS_SOLUTIONS
 from sarlink.mtsp.plan import MtspPlan, Objective, Solver
@@ -30,9 +31,11 @@ __all__ = [
     "MtspPlan",
     "Objective",
     "Solver",
+    "area_cells",
     "budget_of",
     "cache_dir",
     "clear_cache",
+    "flyable",
     "grid_cells",
     "plan_for",
     "solve",

@@ -23,6 +23,7 @@ from filelock import FileLock
 
 from sarlink.cachedir import cache_root
 from sarlink.config import ConfigError
+from sarlink.mtsp.clip import area_cells, area_key, is_polygon
 from sarlink.mtsp.grid import grid_cells
 from sarlink.mtsp.plan import MtspPlan
 from sarlink.mtsp.solvers import budget_of, solve
@@ -72,7 +73,9 @@ def _plan_params(mission: Mission, salesmen: int, cells: int) -> dict[str, Any]:
     """Everything a mission's plan depends on; ``min_cells`` resolved so None shares a key."""
     m = mission.mtsp
     min_cells = m.min_cells if m.min_cells is not None else cells // salesmen
+    area = {"area": area_key(mission)} if is_polygon(mission) else {}
     return {
+        **area,
         "version": CACHE_VERSION,
         "size": mission.area.size,
         "r": mission.sensing.r,
@@ -92,7 +95,8 @@ def solve_for(mission: Mission, salesmen: int) -> MtspPlan:
     """Solve the mTSP plan for ``salesmen`` drones in ``mission`` now, bypassing every cache.
 
     The cities are the cells of :func:`grid_cells` for ``mission.area.size`` and
-    ``mission.sensing.r``; the depot is the BS; solver settings come from ``mission.mtsp``.
+    ``mission.sensing.r`` (on a polygon area, :func:`sarlink.mtsp.clip.area_cells`); the
+    depot is the BS; solver settings come from ``mission.mtsp``.
     A :class:`ConfigError` names the setting when the mission admits no plan.
     """
     points, params = _checked_params(mission, salesmen)
@@ -146,12 +150,18 @@ def _solve_lock(path: Path) -> Iterator[None]:
 
 def _checked_params(mission: Mission, salesmen: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The cells and the plan parameters, or a :class:`ConfigError` if no plan exists."""
-    side = math.ceil(mission.area.size / mission.sensing.r - 1e-9)
-    if side * side > MAX_CELLS:
-        raise ConfigError(f"an mTSP plan has at most {MAX_CELLS:,} cells: area.size / sensing.r "
-                          f"must be at most {math.isqrt(MAX_CELLS)}, got {mission.area.size:g} / "
-                          f"{mission.sensing.r:g}")
-    points = grid_cells(mission.area.size, mission.sensing.r)
+    if is_polygon(mission):
+        points = area_cells(mission)
+        if len(points) > MAX_CELLS:
+            raise ConfigError(f"an mTSP plan has at most {MAX_CELLS:,} cells; the area holds "
+                              f"{len(points):,} cells of side sensing.r = {mission.sensing.r:g} m")
+    else:
+        side = math.ceil(mission.area.size / mission.sensing.r - 1e-9)
+        if side * side > MAX_CELLS:
+            raise ConfigError(f"an mTSP plan has at most {MAX_CELLS:,} cells: area.size / "
+                              f"sensing.r must be at most {math.isqrt(MAX_CELLS)}, got "
+                              f"{mission.area.size:g} / {mission.sensing.r:g}")
+        points = grid_cells(mission.area.size, mission.sensing.r)
     cells, min_cells = len(points), mission.mtsp.min_cells
     if not 1 <= salesmen <= cells:
         raise ConfigError(f"an mTSP plan needs 1 to {cells} drones, one per cell at most "

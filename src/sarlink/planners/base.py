@@ -15,8 +15,10 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal, Protocol
 
 import numpy as np
+import shapely
 
 from sarlink.config import ConfigError
+from sarlink.config.region import EDGE, area_polygon, is_polygon
 from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.steering import Steering
 
@@ -93,6 +95,8 @@ def checked_routes(planner: str, routes: Sequence[Any], mission: Mission, *,
         raise ConfigError(f"planner {planner!r}: gave {len(arrays)} routes for {n} drones; "
                           f"{need} expected")
     size, bs = mission.area.size, np.asarray(mission.area.bs_xy, dtype=float)
+    area = area_polygon(mission.region, size) if is_polygon(mission.region) else None
+    where = f"[0, {size:g}]²" if area is None else "its polygon, out of its holes"
     out = []
     for i, route in enumerate(arrays):
         if route.size == 0 and not every_drone:
@@ -104,11 +108,14 @@ def checked_routes(planner: str, routes: Sequence[Any], mission: Mission, *,
         if not np.isfinite(route).all():
             raise ConfigError(f"planner {planner!r}: route of drone {i} has a waypoint that "
                               "is not finite")
-        outside = ~((route >= 0) & (route <= size)).all(axis=1)
+        if area is None:
+            outside = ~((route >= 0) & (route <= size)).all(axis=1)
+        else:
+            outside = ~shapely.dwithin(area, shapely.points(route), EDGE)
         if outside.any():
             x, y = route[outside][0]
             raise ConfigError(f"planner {planner!r}: route of drone {i} leaves the area at "
-                              f"waypoint ({x:g}, {y:g}); the area is [0, {size:g}]²")
+                              f"waypoint ({x:g}, {y:g}); the area is {where}")
         if not np.array_equal(route[-1], bs):
             route = np.vstack([route, bs])
         out.append(route)

@@ -19,16 +19,16 @@ __all__ = ["CONB_PLANNER", "CONCOV_PLANNER", "COVB_PLANNER", "MTSP", "MTSP_CONB"
 def mtsp_routes(mission: Mission) -> tuple[np.ndarray, ...]:
     """Section 3.1.1: every drone flies its tour of one centralized mTSP plan."""
     # imported here so that the registry loads without Numba kernels or OR-Tools
-    from sarlink.mtsp import plan_for
+    from sarlink.mtsp import flyable, plan_for
 
-    return plan_for(mission, mission.team.drones).routes()
+    return flyable(mission, plan_for(mission, mission.team.drones).routes())
 
 
 def mtsp_conb_routes(mission: Mission) -> tuple[np.ndarray, ...]:
     """Algorithm 1: ``N_r`` drones fly an mTSP plan; the others run ConB."""
-    from sarlink.mtsp import plan_for
+    from sarlink.mtsp import flyable, plan_for
 
-    return plan_for(mission, min(mission.team.nr, mission.team.drones)).routes()
+    return flyable(mission, plan_for(mission, min(mission.team.nr, mission.team.drones)).routes())
 
 
 MTSP = RoutePlanner("mtsp", "mTSP", mtsp_routes, colour="#1f77b4", marker="o")
