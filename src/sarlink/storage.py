@@ -36,9 +36,9 @@ import numpy as np
 import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as pq
-from pydantic import BaseModel
 
 from sarlink.config import ConfigError, Experiment, Mission, mission_hash
+from sarlink.config.mission import flat_groups
 
 __all__ = ["MANIFEST", "Point", "Store", "load", "open_store", "read_manifest", "run_table"]
 
@@ -87,8 +87,7 @@ def _param_columns() -> dict[str, _Column]:
     """Every flat mission parameter and its column type, declared rather than inferred so that
     a parameter that is None in one file and set in another has one type in both."""
     columns = {}
-    for group in Mission.model_fields.values():
-        model = typing.cast(type[BaseModel], group.annotation)
+    for model in flat_groups().values():
         for name, info in model.model_fields.items():
             columns[name] = _column(info.annotation)
     return columns

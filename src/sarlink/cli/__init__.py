@@ -6,6 +6,7 @@ import typer
 
 from sarlink.cli.design import design
 from sarlink.cli.errors import Guarded
+from sarlink.cli.export import export
 from sarlink.cli.plan import plan
 from sarlink.cli.planners import planners
 from sarlink.cli.replay import replay
@@ -30,6 +31,7 @@ app.command()(reproduce)
 app.command()(replay)
 app.command()(design)
 app.command()(planners)
+app.command()(export)
 
 
 @app.callback()

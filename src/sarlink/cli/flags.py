@@ -7,9 +7,10 @@ commands that take it. :func:`mission_flags` adds a command's rows to it as Type
 user typed; :meth:`MissionFlags.mission` builds the mission, and every error about a value
 names the flag as the user typed it (``--td (timing.horizon): ...``).
 
-Adding a flag is one row. A flag that sets no single mission parameter (``--reading``; say a
-polygon file) has ``param=None`` and an ``apply`` function that makes the mission with it;
-``--config``, the mission every flag starts from, is the one read by
+Adding a flag is one row. A flag that sets no single mission parameter (``--reading``) has
+``param=None`` and an ``apply`` function that makes the mission with it; ``--config``, the
+mission every flag starts from, and the three that put it on the map (``--area``, ``--bs``,
+``--prior``, read together since the area file's projection depends on the BS) are read by
 :meth:`MissionFlags.mission` itself.
 """
 
@@ -29,6 +30,8 @@ from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
+from sarlink.config.base import read_toml
+from sarlink.config.geo import parse_lonlat
 from sarlink.config.mission import Area, Channel, MtspSettings, Readings, Sensing, Team, Timing
 from sarlink.planners import planner_names
 from sarlink.simulation import check_mission
@@ -109,14 +112,16 @@ def _read(mission: Mission, name: str) -> Mission:
 
 FLAGS: tuple[Flag, ...] = _rows(
     # name, type, help, mission parameter, commands
-    ("--planner", str, f"planner: {', '.join(planner_names())}", "planner", {"simulate"}),
-    ("--drones", int, "number of drones N_m", "drones", {*ONE_RUN, "plan"}),
-    ("--rc", float, "communication range r_c, m", "rc", {*ONE_RUN, "design"}),
+    ("--planner", str, f"planner: {', '.join(planner_names())}", "planner",
+     {"simulate", "export"}),
+    ("--drones", int, "number of drones N_m", "drones", {*ONE_RUN, "plan", "export"}),
+    ("--rc", float, "communication range r_c, m", "rc", {*ONE_RUN, "design", "export"}),
     ("--alpha", float, "ConCov coverage weight", "alpha", ONE_RUN),
-    ("--nr", int, "mTSP-ConB: drones flying the plan", "nr", ONE_RUN),
+    ("--nr", int, "mTSP-ConB: drones flying the plan", "nr", {*ONE_RUN, "export"}),
     ("--td", float, "target duration t_d = horizon, s", "horizon", ONE_RUN),
     ("--size", float, "side a of the square area, m", "size", {"design", "plan"}),
-    ("--r", float, "sensing range r (the mTSP cell side), m", "r", {*ONE_RUN, "design", "plan"}),
+    ("--r", float, "sensing range r (the mTSP cell side), m", "r",
+     {*ONE_RUN, "design", "plan", "export"}),
     ("--speed", float, "flight speed V_m, m/s", "speed", {"plan"}),
     ("--p-miss", float, "miss probability per look", "p_miss", {*ONE_RUN, "design"}),
     ("--look", str, "when a drone looks", "look", {*ONE_RUN, "design"}),
@@ -140,8 +145,14 @@ FLAGS: tuple[Flag, ...] = _rows(
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN, apply=_read),
+    ("--area", Path, "the search area: a GeoJSON polygon in longitude/latitude, its holes "
+     "no-fly zones (docs/missions.md)", None, {*ONE_RUN, "design", "plan", "export"}),
+    ("--bs", str, "the BS's longitude,latitude in degrees (else the area file's Point)", None,
+     {*ONE_RUN, "design", "plan", "export"}),
+    ("--prior", Path, "where the target is likely to be: GeoJSON polygons with a probability "
+     "property, or a GeoTIFF raster", None, {*ONE_RUN, "design", "export"}),
     ("--config", Path, "mission TOML; flags override it", None,
-     {*ONE_RUN, "design", "plan"}),
+     {*ONE_RUN, "design", "plan", "export"}),
 )
 """Every mission flag of every command. Range and help's allowed values come from the
 mission model, so a flag never states a range of its own."""
@@ -163,14 +174,21 @@ class MissionFlags:
         return next((value for flag, value in self.given if flag.name == name), None)
 
     def mission(self) -> Mission:
-        """The mission: ``--config``'s file (or the paper's defaults), then the flags with an
-        ``apply`` (``--reading``), then the flags that set parameters. An error about a value
-        names the flag the user typed."""
+        """The mission: ``--config``'s file (or the paper's defaults) put on the map by
+        ``--area``, ``--bs`` and ``--prior``, then the flags with an ``apply`` (``--reading``),
+        then the flags that set parameters. An error about a value names the flag the user
+        typed."""
         config = self.value("--config")
+        placed = [name for name in MAP_FLAGS if self.value(name) is not None]
+        typed = " ".join(["--config"] * (config is not None) + placed)
         try:
-            base = Mission.from_toml(config) if config is not None else Mission()
+            data = read_toml(config) if config is not None else {}
+            if placed:
+                data = self._placed(data)
+            base = Mission.from_file_data(config, data) if config is not None else \
+                Mission.from_dict(data)
         except ConfigError as exc:
-            raise ConfigError(f"--config {exc}") from None
+            raise ConfigError(f"{typed}: {exc}" if placed else f"--config {exc}") from None
         for flag, value in self.given:
             if flag.apply is not None:
                 try:
@@ -184,6 +202,26 @@ class MissionFlags:
             return mission
         except ConfigError as exc:
             raise ConfigError(_named(str(exc), params)) from None
+
+
+    def _placed(self, data: dict[str, Any]) -> dict[str, Any]:
+        """Mission data whose ``[region]`` names the typed ``--area`` and ``--prior`` files
+        (in place of the file's) and ``--bs``; the mission reads them when it is built."""
+        area, bs, prior = (self.value(name) for name in MAP_FLAGS)
+        region = dict(data.get("region") or {})
+        if area is not None:  # the file's polygon replaces one given in metres
+            region.pop("outline", None)
+            region.pop("holes", None)
+            region["area"] = str(Path(area).resolve())
+        if prior is not None:
+            region["prior"] = str(Path(prior).resolve())
+        if bs is not None:
+            region["bs"] = parse_lonlat(bs, "--bs")
+        return {**data, "region": region}
+
+
+MAP_FLAGS = ("--area", "--bs", "--prior")
+"""The flags that put a mission on the map (docs/missions.md), read together."""
 
 
 def _named(message: str, params: dict[Flag, Any]) -> str:

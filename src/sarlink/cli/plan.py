@@ -11,17 +11,23 @@ from rich.table import Table
 from sarlink.cli.common import console, plot_file, print_json, user_errors
 from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import Mission
-from sarlink.mtsp import MtspPlan, plan_for
+from sarlink.config.region import is_polygon
+from sarlink.mtsp import MtspPlan, flyable, plan_for
 
 
 def _save_plot(result: MtspPlan, mission: Mission, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     from sarlink.plots import plot_plan
+    from sarlink.plots.area import draw_area
 
     fig, ax = plt.subplots(figsize=(9, 7), layout="constrained")
     try:
-        plot_plan(result, ax, size=mission.area.size, r=mission.sensing.r)
+        if is_polygon(mission.region):  # the area, and the tours as flown round its holes
+            draw_area(ax, mission)
+            plot_plan(result, ax, r=mission.sensing.r, routes=flyable(mission, result.routes()))
+        else:
+            plot_plan(result, ax, size=mission.area.size, r=mission.sensing.r)
         fig.savefig(path, dpi=150)
     finally:
         plt.close(fig)

@@ -74,6 +74,12 @@ def simulate(
         "t_reachable": _finite_or_none(result.t_reachable()),
         "connected_fraction": _finite_or_none(result.connected_fraction()),
     }
+    region = mission.region
+    if region is not None and region.anchor is not None:  # on the map: where to look
+        from sarlink.export import mission_frame
+
+        lon, lat = mission_frame(mission).to_lonlat(*result.target)
+        out["target_lonlat"] = [round(float(lon), 7), round(float(lat), 7)]
     if json:
         print_json(out)
         return
@@ -83,7 +89,10 @@ def simulate(
     table.add_column("outcome")
     table.add_column("value", justify="right")
     never = "[dim]not within t_d[/]"
-    table.add_row("target at", f"({result.target[0]:.0f}, {result.target[1]:.0f}) m")
+    where = f"({result.target[0]:.0f}, {result.target[1]:.0f}) m"
+    if "target_lonlat" in out:
+        where += " = {:.5f}, {:.5f}".format(*out["target_lonlat"])
+    table.add_row("target at", where)
     table.add_row("detected at", never if result.t_detect is None else
                   f"{result.t_detect:g} s by drone {result.detector}")
     table.add_row("BS notified at", never if result.t_notify is None else f"{result.t_notify:g} s")

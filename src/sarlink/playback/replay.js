@@ -103,11 +103,24 @@
   Panel.prototype.view = function () {
     const side = this.canvas.clientWidth;
     return { side: side, margin: MARGIN, scale: (side - 2 * MARGIN) / this.scene.size,
-             size: this.scene.size };
+             size: this.scene.size, origin: this.scene.origin || [0, 0] };
   };
 
   Panel.prototype.toScreen = function (view, x, y) {
-    return [view.margin + x * view.scale, view.margin + (view.size - y) * view.scale];
+    return [view.margin + (x - view.origin[0]) * view.scale,
+            view.margin + (view.size - (y - view.origin[1])) * view.scale];
+  };
+
+  /* A polygon area's rings as one path (holes cut out by the even-odd rule). */
+  Panel.prototype.areaPath = function (ctx, at, rings) {
+    ctx.beginPath();
+    rings.forEach(function (ring) {
+      ring.forEach(function (p, k) {
+        const q = at(p);
+        if (k === 0) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]);
+      });
+      ctx.closePath();
+    });
   };
 
   /* The scenery that never moves, drawn once per canvas size. */
@@ -125,15 +138,31 @@
     ctx.strokeStyle = "#eee";
     ctx.lineWidth = 1;
     for (let g = 1000; g < s.size; g += 1000) {
-      const a = at([g, 0]);
-      const b = at([0, g]);
+      const a = at([view.origin[0] + g, view.origin[1]]);
+      const b = at([view.origin[0], view.origin[1] + g]);
       ctx.beginPath();
       ctx.moveTo(a[0], view.margin); ctx.lineTo(a[0], view.side - view.margin);
       ctx.moveTo(view.margin, b[1]); ctx.lineTo(view.side - view.margin, b[1]);
       ctx.stroke();
     }
     ctx.strokeStyle = "#333";
-    ctx.strokeRect(view.margin, view.margin, s.size * view.scale, s.size * view.scale);
+    if (s.area) {  // a polygon: the prior's zones, the outline, the no-fly holes
+      s.area.zones.forEach(function (z) {
+        self.areaPath(ctx, at, [z.ring]);
+        ctx.fillStyle = "rgba(214, 39, 40, " + (0.04 + 0.2 * z.density) + ")";
+        ctx.fill();
+      });
+      self.areaPath(ctx, at, [s.area.outline]);
+      ctx.stroke();
+      s.area.holes.forEach(function (h) {
+        self.areaPath(ctx, at, [h]);
+        ctx.fillStyle = "#ddd";
+        ctx.fill();
+        ctx.stroke();
+      });
+    } else {
+      ctx.strokeRect(view.margin, view.margin, s.size * view.scale, s.size * view.scale);
+    }
     const bs = at(s.bs);
     ctx.setLineDash([5, 4]);
     ctx.strokeStyle = COLOUR.bs;
@@ -153,9 +182,14 @@
     ctx.setLineDash([]);
     const target = at(s.target);
     ctx.save();
-    ctx.beginPath();
-    ctx.rect(view.margin, view.margin, s.size * view.scale, s.size * view.scale);
-    ctx.clip();
+    if (s.area) {
+      self.areaPath(ctx, at, [s.area.outline].concat(s.area.holes));
+      ctx.clip("evenodd");
+    } else {
+      ctx.beginPath();
+      ctx.rect(view.margin, view.margin, s.size * view.scale, s.size * view.scale);
+      ctx.clip();
+    }
     ctx.fillStyle = "rgba(214, 39, 40, 0.07)";
     ctx.beginPath();
     ctx.arc(target[0], target[1], s.r * view.scale, 0, 2 * Math.PI);

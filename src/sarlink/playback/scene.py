@@ -6,6 +6,7 @@ import math
 from typing import Any
 
 from sarlink.config import Mission
+from sarlink.config.region import area_polygon, zone_polygon
 from sarlink.engine.codes import Mode
 from sarlink.planners import get_planner
 from sarlink.playback.encoding import encode
@@ -64,4 +65,28 @@ def scene(result: RunResult, mission: Mission, title: str | None = None,
         "events": [e.json() for e in events(result)],
         "tours": tours,
         "frames": encode(traj, budget).json(),
+        **_area(mission),  # a polygon's frame replaces the square's size
+    }
+
+
+def _area(mission: Mission) -> dict[str, Any]:
+    """A polygon area's drawing (the square needs none: ``size`` is enough): the frame's
+    corner ``origin`` and side ``size``, the rings and the prior zones with their relative
+    density (1 for the likeliest per square metre)."""
+    region = mission.region
+    if region is None or (region.outline is None and not region.holes and not region.zones):
+        return {}
+    area = area_polygon(region, mission.area.size)
+    x0, y0, x1, y1 = area.bounds
+    density = [z.weight / zone_polygon(z).area for z in region.zones]
+    top = max(density, default=1.0)
+    return {
+        "origin": [x0, y0],
+        "size": max(x1 - x0, y1 - y0),
+        "area": {
+            "outline": [list(p) for p in area.exterior.coords],
+            "holes": [[list(p) for p in h.coords] for h in area.interiors],
+            "zones": [{"ring": [list(p) for p in zone_polygon(z).exterior.coords],
+                       "density": d / top} for z, d in zip(region.zones, density, strict=True)],
+        },
     }

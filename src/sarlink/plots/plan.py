@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from itertools import pairwise
 
 import matplotlib.pyplot as plt
@@ -13,13 +14,14 @@ from sarlink.mtsp import MtspPlan
 
 def plot_plan(
     plan: MtspPlan, ax: plt.Axes | None = None, *, size: float | None = None,
-    r: float | None = None,
+    r: float | None = None, routes: Sequence[np.ndarray] | None = None,
 ) -> plt.Axes:
     """Draw ``plan`` on ``ax`` (a new figure if None).
 
     Each tour has its own colour, arrows on its legs give the flying order, and the legend
     gives its number of cells and length. With ``r``, every point is drawn as a cell of side
-    ``r``; with ``size``, the area ``[0, size]²`` is outlined and framed.
+    ``r``; with ``size``, the area ``[0, size]²`` is outlined and framed. ``routes`` are
+    the tours as flown when they differ from the plan's straight legs (bent round holes).
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(7, 7), layout="constrained")
@@ -32,10 +34,12 @@ def plot_plan(
     n = len(plan.tours)
     cmap = plt.get_cmap("tab10" if n <= 10 else "tab20" if n <= 20 else "hsv")
     colors = cmap(np.linspace(0, 1, n, endpoint=False)) if n > 20 else cmap(np.arange(n))
-    for i, (route, color) in enumerate(zip(plan.routes(), colors, strict=True)):
+    flown = plan.routes() if routes is None else routes
+    for i, (route, color) in enumerate(zip(flown, colors, strict=True)):
         path = np.vstack([plan.depot, route])
+        cells = len(plan.tours[i])
         ax.plot(path[:, 0], path[:, 1], lw=1.4, color=color, marker="o", ms=3,
-                label=f"drone {i}: {len(route) - 1} cells, {plan.lengths[i] / 1000:.2f} km")
+                label=f"drone {i}: {cells} cells, {plan.lengths[i] / 1000:.2f} km")
         for a, b in pairwise(path):
             mid, half = (a + b) / 2, (b - a) * 0.02
             ax.annotate("", xy=mid + half, xytext=mid - half,

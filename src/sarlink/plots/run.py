@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.patches import Circle, Rectangle
+from matplotlib.patches import Circle
 
 from sarlink.config import Mission
 from sarlink.engine.codes import Mode
+from sarlink.plots.area import draw_area
 from sarlink.result import RunResult
 
 
@@ -18,10 +19,9 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         raise ValueError("plot_run needs a result simulated with trajectory=True")
     if ax is None:
         _, ax = plt.subplots(figsize=(7, 7), layout="constrained")
-    size = mission.area.size
     bx, by = mission.area.bs_xy
     tx, ty = result.target
-    ax.add_patch(Rectangle((0, 0), size, size, fill=False, lw=1.2, color="black"))
+    draw_area(ax, mission)
     ax.add_patch(Circle((bx, by), mission.channel.rc, fill=False, ls="--", lw=0.8, color="tab:blue",
                         label=f"BS range r_c = {mission.channel.rc:g} m"))
     ax.add_patch(Circle((tx, ty), mission.sensing.r, color="tab:red", alpha=0.12,
@@ -49,8 +49,7 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
                 mfc="none", mec="tab:green", mew=2, ls="none",
                 label=f"BS notified at t = {result.t_notify:g} s")
     label = mission.team.planner
-    ax.set(xlim=(-0.03 * size, 1.03 * size), ylim=(-0.03 * size, 1.03 * size), aspect="equal",
-           xlabel="x (m)", ylabel="y (m)",
+    ax.set(xlabel="x (m)", ylabel="y (m)",
            title=f"{label}, N = {mission.team.drones}, r_c = {mission.channel.rc:g} m, "
                  f"seed {result.seed}, run {result.run}")
     ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
