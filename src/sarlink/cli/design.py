@@ -13,6 +13,7 @@ from rich.table import Table
 from sarlink.cli.common import console, print_json, user_errors
 from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import ConfigError
+from sarlink.config.region import area_label
 
 if TYPE_CHECKING:
     from sarlink.sizing import DesignAnswer, Estimate, PlannerAnswer
@@ -72,8 +73,9 @@ def _setting(planner: PlannerAnswer) -> str:
 def _print(answer: DesignAnswer) -> None:
     r = answer.request
     m = r.mission
+    area = area_label(m.region, m.area.size)
     table = Table(title=f"Smallest team with P_s({r.td:g} s) >= {r.ps:g} at {r.confidence:.0%} "
-                        f"confidence (r_c = {m.channel.rc:g} m, area {m.area.size:g} m, "
+                        f"confidence (r_c = {m.channel.rc:g} m, {area}, "
                         f"up to {r.max_drones} drones)", title_justify="left")
     for name in ("planner", "smallest team", "P_s [95% Wilson]", "runs", "setting",
                  "mission time"):
