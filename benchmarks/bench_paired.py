@@ -39,7 +39,6 @@ import numpy as np
 from sarlink import Mission, prepare
 from sarlink.engine.build import kernel_for
 from sarlink.engine.radios import get_radio
-from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import run_streams
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -74,7 +73,9 @@ class Side:
     def run_once(self, case: str, reading: str, seed: int, run: int) -> tuple[float, Any]:
         prepared = self.prepare_of(self.mission_of(case, reading))
         streams = run_streams(seed, run)
-        scenario = draw_scenario(prepared.mission, streams.scenario)
+        # each side draws with its own revision's draw_scenario, which its run module imports
+        draw = sys.modules[type(prepared).__module__].draw_scenario
+        scenario = draw(prepared.mission, streams.scenario)
         if self.kernel_of is None:
             start = time.perf_counter()
             out = prepared.record(streams, scenario, trajectory=True)
