@@ -36,7 +36,7 @@ $(BIN)/sarlink: pyproject.toml $(LOCK)
 	touch $@
 
 demo: $(BIN)/sarlink
-	$(BIN)/sarlink reproduce --quick --out reproduction
+	$(BIN)/sarlink reproduce --quick --figures 1,2,3,4,5,6,7 --out reproduction
 
 # The replay's browser tests drive Debian's Chromium and its driver, never a downloaded build.
 browser:
