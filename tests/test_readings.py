@@ -19,7 +19,7 @@ from typer.testing import CliRunner
 from phase_inputs import padded, params
 from sarlink import ConfigError, Mission, Scenario, load, prepare, simulate
 from sarlink.cli import app
-from sarlink.config import DEFAULT_READING, READINGS, Readings
+from sarlink.config import DEFAULT_READING, READINGS, Experiment, Readings
 from sarlink.engine import Prepared, Steering
 from sarlink.engine.codes import SHADOWING_CODES
 from sarlink.engine.radios import lognormal
@@ -27,7 +27,8 @@ from sarlink.engine.rules import CONB
 from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import plan_seed, run_streams
 from sarlink.paper import ReproductionResult, reproduce
-from sarlink.paper.variants import SYMBOL, variants
+from sarlink.paper.variants import SYMBOL, reaches, variants
+from sarlink.planners import get_planner
 
 FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
@@ -133,11 +134,17 @@ def test_a_reading_preset_sets_the_choices_and_explicit_values_win() -> None:
 
 
 def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
-    """CovB and mTSP runs are the same under every reading: no choice touches their rules."""
+    """CovB and mTSP runs are the same under the presets that differ only in ConB's and
+    ConCov's choices (``literal``, ``sarlink-1``, ``sarlink-2``), and the sensitivity
+    analysis says those choices do not reach them."""
+    older = ("literal", "sarlink-1", "sarlink-2")
     for planner in ("covb", "mtsp"):
+        experiment = Experiment(mission=Mission.build(planner=planner))
+        assert {c for c in reaches(get_planner(planner), experiment)
+                if len({READINGS[r].choices[c] for r in older}) > 1} == set()
         runs = {name: simulate(Mission.build(reading=name, planner=planner, drones=4,
                                              rc=500.0, horizon=1500.0), seed=5, run=1)
-                for name in READINGS}
+                for name in older}
         first, *rest = runs.values()
         assert all(r.t_notify == first.t_notify and r.t_detect == first.t_detect and
                    np.array_equal(r.reach_cum, first.reach_cum) for r in rest)
@@ -149,7 +156,10 @@ def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
 def test_the_variants_change_one_choice_to_each_other_value() -> None:
     names = [v.name for v in variants(READINGS["sarlink-1"])]
     assert names == ["conb_check=continuous", "contacts=all", "isolated=home",
-                     "concov_fallback=connectivity", "concov_connected=none", "td_fig3=1000",
+                     "concov_fallback=connectivity", "concov_connected=none", "takeoff=random",
+                     "takeoff=jitter", "conb_fallback=heading", "covb_direction=printed",
+                     "shadowing=run", "shadowing=correlated", "reachability=multihop",
+                     "mtsp_plan=per-run", "mtsp_prediction=paths", "td_fig3=1000",
                      "td_fig3=4000"]
     assert [v.name for v in variants(READINGS["literal"])][:2] == ["conb_check=period",
                                                                    "contacts=routed"]
@@ -165,10 +175,18 @@ def study(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult) -> None:
     folders = {p.name: sorted(f.name for f in p.iterdir())
                for p in (study.out / "runs" / "miss").iterdir()}
-    assert folders["covb"] == folders["mtsp"] == ["any"]
-    assert folders["conb"] == folders["mtsp-conb"] == sorted(
-        ["period-routed-keep", "continuous-routed-keep", "period-all-keep", "period-routed-home"])
-    assert len(folders["concov"]) == 6  # the reading and each of its five changes
+    # CovB: the take-off, Eq. 8's direction, reachability; mTSP: reachability, the plan
+    assert folders["covb"] == sorted(["even-push-direct", "random-push-direct",
+                                      "jitter-push-direct", "even-printed-direct",
+                                      "even-push-multihop"])
+    assert folders["mtsp"] == sorted(["direct-shared", "multihop-shared", "direct-per-run"])
+    assert folders["conb"] == sorted(
+        ["period-routed-keep-even-contact-direct", "continuous-routed-keep-even-contact-direct",
+         "period-all-keep-even-contact-direct", "period-routed-home-even-contact-direct",
+         "period-routed-keep-random-contact-direct", "period-routed-keep-jitter-contact-direct",
+         "period-routed-keep-even-heading-direct", "period-routed-keep-even-contact-multihop"])
+    assert len(folders["mtsp-conb"]) == 10  # ConB's eight, and the plan's and prediction's
+    assert len(folders["concov"]) == 11  # the reading and each of its ten changes
 
 
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
