@@ -139,7 +139,7 @@ def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
     analysis says those choices do not reach them."""
     older = ("literal", "sarlink-1", "sarlink-2")
     for planner in ("covb", "mtsp"):
-        experiment = Experiment(mission=Mission.build(planner=planner))
+        experiment = Experiment(seed=0, runs=1, mission=Mission.build(planner=planner))
         assert {c for c in reaches(get_planner(planner), experiment)
                 if len({READINGS[r].choices[c] for r in older}) > 1} == set()
         runs = {name: simulate(Mission.build(reading=name, planner=planner, drones=4,
@@ -191,7 +191,8 @@ def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult)
 
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
     """The stored runs of ConB under the continuous check are those simulated directly."""
-    runs = load(study.out / "runs" / "miss" / "conb" / "continuous-routed-keep")
+    runs = load(study.out / "runs" / "miss" / "conb" /
+                "continuous-routed-keep-even-contact-direct")
     for row in runs.itertuples():
         mission = Mission.build(reading="sarlink-1", conb_check="continuous", planner="conb",
                                 drones=10, rc=500.0, horizon=1000.0, stop="detected",
