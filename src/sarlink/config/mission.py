@@ -106,7 +106,8 @@ class Channel(Checked):
     sigma: float = Field(0.0, ge=0, le=30, description="shadowing standard deviation, dB")
     pathloss_exponent: float = Field(1.75, gt=0, description="path-loss exponent n")
     coherence: float | None = Field(
-        None, gt=0, description="shadowing redraw period, s; None means t_s"
+        None, gt=0, description="shadowing redraw period, s, with readings.shadowing = "
+        "period; None means t_s"
     )
     altitude: float = Field(
         0.0, ge=0, description="drone altitude h, m, added to drone-ground link distances"
