@@ -72,12 +72,20 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
 
     pos = [bs] * n
     heading = [2 * math.pi * k / n + offset for k in range(n)]
+    if readings.takeoff != "even":  # one uniform number per drone from the take-off stream
+        u = [streams.takeoff.random() for _ in range(n)]
+        if readings.takeoff == "random":
+            heading = [2 * math.pi * x for x in u]
+        else:  # each off by at most 5 degrees (docs/model.md)
+            heading = [h + math.radians(5.0) * (2 * x - 1) for h, x in zip(heading, u,
+                                                                            strict=True)]
     last_change = [0.0] * n
     mode = ["search"] * n
     knows = [False] * n
     in_range = [False] * n
     pass_start = [0.0] * n
     shadow: dict[tuple[int, int], float] = {}
+    z: dict[tuple[int, int], float] = {}  # correlated shadowing's normal state per link
     t_det: float | None = None
     t_not: float | None = None
     reach_time = conn_time = 0.0
@@ -114,8 +122,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         for j in near:
             d = _dist(pos[i], pos[j])
             if d >= 1:  # pairs closer than 1 m exert no force
-                fx += (pos[i][0] - pos[j][0]) / d / d
-                fy += (pos[i][1] - pos[j][1]) / d / d
+                push = -1.0 if readings.covb_direction == "printed" else 1.0  # theta_ij: i to j
+                fx += push * (pos[i][0] - pos[j][0]) / d / d
+                fy += push * (pos[i][1] - pos[j][1]) / d / d
         return math.atan2(fy, fx)
 
     def velocity(j: int) -> tuple[float, float]:
@@ -164,7 +173,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         rx = math.cos(heading[i]) + math.cos(theta_ij)
         ry = math.sin(heading[i]) + math.sin(theta_ij)
         if math.hypot(rx, ry) < 1e-9:
-            return theta_ij
+            return theta_ij if readings.conb_fallback == "contact" else heading[i]
         return math.atan2(ry, rx)
 
     def predicted(seconds: float) -> set[int]:
@@ -194,7 +203,17 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     for k in range(steps + 1):
         t = k * dt
         # observe
-        if mission.channel.sigma > 0 and k % coherence == 0:
+        if mission.channel.sigma > 0 and readings.shadowing == "correlated":
+            # Gudmundson: each drone end flies v dt per step; exp(-x / d_c) over x flown
+            for i in range(n + 2):
+                for j in range(i + 1, n + 2):
+                    e = streams.shadow.standard_normal()
+                    flown = v * dt * ((i < n) + (j < n))
+                    rho = math.exp(-flown / mission.channel.decorrelation)
+                    z[(i, j)] = e if k == 0 else rho * z[(i, j)] + math.sqrt(1 - rho**2) * e
+                    shadow[(i, j)] = mission.channel.sigma * z[(i, j)]
+        elif mission.channel.sigma > 0 and (k == 0 or (readings.shadowing == "period"
+                                                       and k % coherence == 0)):
             for i in range(n + 2):
                 for j in range(i + 1, n + 2):
                     shadow[(i, j)] = mission.channel.sigma * streams.shadow.standard_normal()
@@ -223,7 +242,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             positions.append(list(pos))
         if k == steps:
             break
-        if any(j in routed for j in links[TG]):
+        over = {BS} if readings.reachability == "direct" else set()  # else drones only
+        if any(j in routed and (j < n or j in over) for j in links[TG]):
             reach_time += dt
         conn_time += dt * sum(1 for i in range(n) if i in routed) / n
 

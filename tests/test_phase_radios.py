@@ -12,10 +12,19 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scipy import stats
 
-from phase_inputs import padded, params
+from phase_inputs import padded
+from phase_inputs import params as mission_params
+from sarlink.engine.codes import Shadowing
+from sarlink.engine.params import Params
 from sarlink.engine.radios import DISC, SHADOWING, lognormal
 
 EMPTY = np.zeros(0)  # the built-in models take no parameter array
+
+
+def params(**changes: object) -> Params:
+    """The scalars with fades redrawn every coherence time (``readings.shadowing =
+    period``); the other forms are tested in test_readings.py."""
+    return mission_params(**{"shadowing": int(Shadowing.PERIOD), **changes})
 
 
 @given(m=st.integers(2, 80), rc=st.floats(1.0, 5000.0), k=st.integers(0, 100))

@@ -17,6 +17,7 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from phase_inputs import BS, component, members, node_arrays, pack, padded, params, words
+from sarlink.engine.codes import Prediction
 from sarlink.engine.geometry import FAR
 from sarlink.engine.graph import bs_component, links
 from sarlink.engine.observation import Observation
@@ -84,7 +85,7 @@ def test_covb_force_is_eq_6(team: tuple[list[tuple[float, float]], list[float], 
     assert members(flying) == {j for j in range(n) if modes[j] != LANDED}
     px, py, _ = node_arrays(xy, n)
     hx, hy = _headings(angles)
-    got = covb_force(i, px, py, hx, hy, near, flying, r)
+    got = covb_force(i, px, py, hx, hy, near, flying, r, False)
     pushers = sorted(j for j in near_sets[i] if j < n and modes[j] != LANDED)
     if not pushers:
         assert got == (hx[i], hy[i])
@@ -110,10 +111,10 @@ def test_covb_force_on_hand_computed_cases() -> None:
     flying = np.zeros(1, dtype=np.uint64)
     flying_drones(np.array([SEARCHING] * 6 + [LANDED], dtype=np.int8), flying)
     size = math.hypot(-0.01, 0.002)
-    assert _same_direction(covb_force(0, px, py, hx, hy, near, flying, 500.0),
+    assert _same_direction(covb_force(0, px, py, hx, hy, near, flying, 500.0, False),
                            (-0.01 / size, 0.002 / size))
-    assert covb_force(2, px, py, hx, hy, near, flying, 500.0) == (1.0, 0.0)
-    assert _same_direction(covb_force(4, px, py, hx, hy, near, flying, 500.0),
+    assert covb_force(2, px, py, hx, hy, near, flying, 500.0, False) == (1.0, 0.0)
+    assert _same_direction(covb_force(4, px, py, hx, hy, near, flying, 500.0, False),
                            (math.cos(0.3), math.sin(0.3)))
 
 
@@ -133,6 +134,11 @@ def _predicted(xy: list[tuple[float, float]], hx: np.ndarray, hy: np.ndarray,
                    + (q[a][1] - q[b][1]) ** 2 + (h[a] - h[b]) ** 2 <= p.rc * p.rc}
                   for a in range(n + 2)]
     return component({n}, neighbours, blocked=n + 1)
+
+
+def _no_routes(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Waypoints, next and end indices of a team without routes."""
+    return np.empty((0, 2)), np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
 
 
 def _conb_arrays(n: int, rc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
@@ -157,7 +163,7 @@ def test_predict_routes_is_a_search_on_extrapolated_positions(
     hx, hy = _headings(angles)
     qx, qy, disc2, out, stack = _conb_arrays(n, rc)
     predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
-                   out, stack)
+                   out, stack, np.zeros(n, np.bool_), *_no_routes(n))
     assert members(out) == _predicted(xy, hx, hy, modes, p, steps, altitude)
 
 
@@ -168,10 +174,12 @@ def test_the_continuous_check_decides_for_a_loss_at_any_increment(
         team: tuple[list[tuple[float, float]], list[float], list[int]], ts: int, rc: float,
         on_route: list[bool], deciding: list[bool]) -> None:
     """Section 3.2's check: a searching distributed drone not routed at every increment up to
-    t + t_s decides now (its clock restarts); the others keep their state."""
+    t + t_s decides now (its clock restarts); the others keep their state. Every node is
+    predicted by its heading (``mtsp_prediction = heading``: the drones marked as on a route
+    have none here)."""
     xy, angles, modes = team
     n = len(angles)
-    p = params(rc=rc, ts_steps=ts)
+    p = params(rc=rc, ts_steps=ts, mtsp_prediction=int(Prediction.HEADING))
     px, py, pz = node_arrays(xy, n)
     hx, hy = _headings(angles)
     qx, qy, disc2, routed_next, stack = _conb_arrays(n, rc)
@@ -181,7 +189,7 @@ def test_the_continuous_check_decides_for_a_loss_at_any_increment(
     k = 7
     any_deciding = check_continuously(
         k, px, py, hx, hy, np.array(modes, dtype=np.int8), np.array(on_route[:n]), pz, p, qx, qy,
-        disc2, routed_next, routed_step, stack, decide, last_change)
+        disc2, routed_next, routed_step, stack, decide, last_change, *_no_routes(n))
     always = set.intersection(*(_predicted(xy, hx, hy, modes, p, s, 0.0)
                                 for s in range(1, ts + 1)))
     assert members(routed_next) == always
@@ -204,7 +212,7 @@ def test_the_continuous_check_sees_a_loss_at_the_last_increment() -> None:
     assert check_continuously(9, px, py, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
                               np.array([SEARCHING] * 2, dtype=np.int8), np.zeros(2, np.bool_),
                               pz, p, qx, qy, disc2, routed_next, routed_next.copy(), stack,
-                              deciding, last_change)
+                              deciding, last_change, *_no_routes(2))
     assert deciding.tolist() == [True, False]
     assert last_change.tolist() == [9, 0]
     assert members(routed_next) == {1, 2}
@@ -442,7 +450,8 @@ def _observation(seed: int, n: int, p: Params) -> Observation:
     mode = np.where(rng.random(n) < 0.2, LANDED, SEARCHING).astype(np.int8)
     return Observation(px, py, pz, np.cos(angles), np.sin(angles), mode,
                        np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.int64),
-                       np.zeros(n, dtype=np.bool_), adj, near, routed, spread, p.rc)
+                       np.zeros(n, dtype=np.bool_), adj, near, routed, spread, p.rc,
+                       *_no_routes(n))
 
 
 @pytest.mark.parametrize("seed", range(4))

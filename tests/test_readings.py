@@ -16,11 +16,19 @@ import pandas as pd
 import pytest
 from typer.testing import CliRunner
 
-from sarlink import ConfigError, Mission, Scenario, load, simulate
+from phase_inputs import padded, params
+from sarlink import ConfigError, Mission, Scenario, load, prepare, simulate
 from sarlink.cli import app
-from sarlink.config import DEFAULT_READING, READINGS, Readings
+from sarlink.config import DEFAULT_READING, READINGS, Experiment, Readings
+from sarlink.engine import Prepared, Steering
+from sarlink.engine.codes import SHADOWING_CODES
+from sarlink.engine.radios import lognormal
+from sarlink.engine.rules import CONB
+from sarlink.engine.scenario import draw_scenario
+from sarlink.engine.streams import plan_seed, run_streams
 from sarlink.paper import ReproductionResult, reproduce
-from sarlink.paper.variants import SYMBOL, variants
+from sarlink.paper.variants import SYMBOL, reaches, variants
+from sarlink.planners import get_planner
 
 FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
@@ -126,11 +134,17 @@ def test_a_reading_preset_sets_the_choices_and_explicit_values_win() -> None:
 
 
 def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
-    """CovB and mTSP runs are the same under every reading: no choice touches their rules."""
+    """CovB and mTSP runs are the same under the presets that differ only in ConB's and
+    ConCov's choices (``literal``, ``sarlink-1``, ``sarlink-2``), and the sensitivity
+    analysis says those choices do not reach them."""
+    older = ("literal", "sarlink-1", "sarlink-2")
     for planner in ("covb", "mtsp"):
+        experiment = Experiment(seed=0, runs=1, mission=Mission.build(planner=planner))
+        assert {c for c in reaches(get_planner(planner), experiment)
+                if len({READINGS[r].choices[c] for r in older}) > 1} == set()
         runs = {name: simulate(Mission.build(reading=name, planner=planner, drones=4,
                                              rc=500.0, horizon=1500.0), seed=5, run=1)
-                for name in READINGS}
+                for name in older}
         first, *rest = runs.values()
         assert all(r.t_notify == first.t_notify and r.t_detect == first.t_detect and
                    np.array_equal(r.reach_cum, first.reach_cum) for r in rest)
@@ -142,7 +156,10 @@ def test_readings_reach_only_the_planners_whose_rules_they_change() -> None:
 def test_the_variants_change_one_choice_to_each_other_value() -> None:
     names = [v.name for v in variants(READINGS["sarlink-1"])]
     assert names == ["conb_check=continuous", "contacts=all", "isolated=home",
-                     "concov_fallback=connectivity", "concov_connected=none", "td_fig3=1000",
+                     "concov_fallback=connectivity", "concov_connected=none", "takeoff=random",
+                     "takeoff=jitter", "conb_fallback=heading", "covb_direction=printed",
+                     "shadowing=run", "shadowing=correlated", "reachability=multihop",
+                     "mtsp_plan=per-run", "mtsp_prediction=paths", "td_fig3=1000",
                      "td_fig3=4000"]
     assert [v.name for v in variants(READINGS["literal"])][:2] == ["conb_check=period",
                                                                    "contacts=routed"]
@@ -158,15 +175,24 @@ def study(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult) -> None:
     folders = {p.name: sorted(f.name for f in p.iterdir())
                for p in (study.out / "runs" / "miss").iterdir()}
-    assert folders["covb"] == folders["mtsp"] == ["any"]
-    assert folders["conb"] == folders["mtsp-conb"] == sorted(
-        ["period-routed-keep", "continuous-routed-keep", "period-all-keep", "period-routed-home"])
-    assert len(folders["concov"]) == 6  # the reading and each of its five changes
+    # CovB: the take-off, Eq. 8's direction, reachability; mTSP: reachability, the plan
+    assert folders["covb"] == sorted(["even-push-direct", "random-push-direct",
+                                      "jitter-push-direct", "even-printed-direct",
+                                      "even-push-multihop"])
+    assert folders["mtsp"] == sorted(["direct-shared", "multihop-shared", "direct-per-run"])
+    assert folders["conb"] == sorted(
+        ["period-routed-keep-even-contact-direct", "continuous-routed-keep-even-contact-direct",
+         "period-all-keep-even-contact-direct", "period-routed-home-even-contact-direct",
+         "period-routed-keep-random-contact-direct", "period-routed-keep-jitter-contact-direct",
+         "period-routed-keep-even-heading-direct", "period-routed-keep-even-contact-multihop"])
+    assert len(folders["mtsp-conb"]) == 10  # ConB's eight, and the plan's and prediction's
+    assert len(folders["concov"]) == 11  # the reading and each of its ten changes
 
 
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
     """The stored runs of ConB under the continuous check are those simulated directly."""
-    runs = load(study.out / "runs" / "miss" / "conb" / "continuous-routed-keep")
+    runs = load(study.out / "runs" / "miss" / "conb" /
+                "continuous-routed-keep-even-contact-direct")
     for row in runs.itertuples():
         mission = Mission.build(reading="sarlink-1", conb_check="continuous", planner="conb",
                                 drones=10, rc=500.0, horizon=1000.0, stop="detected",
@@ -191,3 +217,186 @@ def test_reproduce_names_an_unknown_reading(tmp_path: Path) -> None:
     out = CliRunner().invoke(app, ["reproduce", "--reading", "nope", "--out", str(tmp_path)])
     assert out.exit_code == 2
     assert "unknown reading 'nope'; known: literal, sarlink-1" in out.output
+
+
+# -- the choices named by issue 23 --------------------------------------------------------------
+
+
+def _takeoff(takeoff: str, seed: int = 4, run: int = 3, drones: int = 6) -> np.ndarray:
+    """The recorded take-off headings (step 0) of a CovB team under ``takeoff``."""
+    mission = Mission.build(planner="covb", drones=drones, horizon=2.0, takeoff=takeoff)
+    trajectory = simulate(mission, seed=seed, run=run, trajectory=True).trajectory
+    assert trajectory is not None
+    return np.asarray(trajectory.headings[0])
+
+
+def test_the_take_off_is_even_random_or_jittered_from_the_run_s_streams() -> None:
+    """``even``: exactly 2πk/N plus the run's offset; ``random``: 2π u with u the take-off
+    stream's numbers, one per drone; ``jitter``: even, each off by (2u - 1) · 5°. Each reading
+    matches only its own formula."""
+    n = 6
+    offset = draw_scenario(Mission(), run_streams(4, 3).scenario).heading_offset
+    u = run_streams(4, 3).takeoff.random(n)
+    even = 2 * math.pi * np.arange(n) / n + offset
+    formulas = {"even": even, "random": 2 * math.pi * u,
+                "jitter": even + math.radians(5.0) * (2 * u - 1)}
+
+    def same(a: np.ndarray, b: np.ndarray) -> bool:
+        return bool(np.allclose(np.cos(a), np.cos(b), atol=1e-12)
+                    and np.allclose(np.sin(a), np.sin(b), atol=1e-12))
+
+    for takeoff in formulas:
+        got = _takeoff(takeoff)
+        assert [name for name, want in formulas.items() if same(got, want)] == [takeoff]
+    jitter = _takeoff("jitter")
+    assert np.abs(np.angle(np.exp(1j * (jitter - even)))).max() <= math.radians(5.0)
+
+
+def test_conb_s_vanishing_resultant_turns_to_the_contact_or_keeps_the_heading() -> None:
+    """A lone ConB drone 996 m east of the BS flies straight away from it: checked at every
+    increment, it decides at once and Eq. 9's unit terms cancel exactly (θ_ij points back to
+    the BS). ``contact`` turns it to θ_ij, due west; ``heading`` keeps it flying east."""
+    args = ("conb", [(2996.0, 2000.0)], [0.0])
+    contact = _headings(*args, rc=1000.0, conb_check="continuous", conb_fallback="contact")
+    heading = _headings(*args, rc=1000.0, conb_check="continuous", conb_fallback="heading")
+    assert contact[1, 0] == pytest.approx((-1.0, 0.0))
+    assert heading[1:, 0] == pytest.approx(np.tile((1.0, 0.0), (len(heading) - 1, 1)))
+
+
+def test_eq_8_pushes_as_the_text_says_or_pulls_as_printed() -> None:
+    """Two CovB drones 200 m apart east-west fly north (r = 500 m). At the update (step 2)
+    drone 0's Eq. 6 is its heading / r plus (1/d) θ̂: θ from drone 1 to drone 0 (``push``,
+    westwards) or from drone 0 to drone 1 as Eq. 8 is printed (``printed``, eastwards)."""
+    positions = [(2200.0, 2000.0), (2400.0, 2000.0)]
+    angles = [math.pi / 2, math.pi / 2]
+    push = _headings("covb", positions, angles, covb_direction="push")
+    pull = _headings("covb", positions, angles, covb_direction="printed")
+    for got, sign in ((push, -1.0), (pull, 1.0)):
+        fx, fy = sign / 200.0, 1.0 / 500.0
+        assert got[3, 0] == pytest.approx((fx / math.hypot(fx, fy), fy / math.hypot(fx, fy)))
+
+
+def _reach(reachability: str, positions: list[tuple[float, float]]) -> float:
+    """Seconds the target at (2600, 2000), 600 m from the BS, was reachable in 10 s."""
+    mission = Mission.build(planner="covb", drones=len(positions), horizon=10.0,
+                            checkpoint=10.0, reachability=reachability)
+    scenario = Scenario(target=(2600.0, 2000.0), positions=np.array(positions),
+                        headings=np.full(len(positions), math.pi / 2))
+    return float(simulate(mission, scenario=scenario).reach_cum[-1])
+
+
+def test_reachability_counts_a_direct_target_bs_link_or_only_routes_over_drones() -> None:
+    """The target 600 m from the BS (r_c = 1000 m), the only drone far away in a corner: a
+    direct link makes it reachable all 10 s (``direct``), never over the drones
+    (``multihop``). With a drone between them both count it."""
+    far = [(200.0, 200.0)]
+    assert _reach("direct", far) == 10.0
+    assert _reach("multihop", far) == 0.0
+    between = [(2300.0, 1500.0)]  # 580 m from the BS, 583 m from the target, flying north
+    assert _reach("direct", between) == _reach("multihop", between) == 10.0
+
+
+def test_shadowing_per_period_per_run_or_correlated_with_the_distance_flown() -> None:
+    """The fades of a 3-drone team (5 nodes) at r_c = 1000 m, sigma = 3 dB, step by step:
+    ``period`` redraws every coherence time (2 steps), ``run`` never after step 0,
+    ``correlated`` keeps exp(-k V dt / d_c) of each link's normal state per step, k its
+    drone ends (the BS-target link, k = 0, never changes), from the same normal numbers."""
+    m, n, steps, seed = 5, 3, 6, 9
+    upper = np.triu_indices(m, 1)
+
+    def fades(shadowing: str) -> list[np.ndarray]:
+        p = params(rc=1000.0, sigma=3.0, shadowing=int(SHADOWING_CODES[shadowing]))
+        thr2 = lognormal.init(p, np.zeros(0), m, padded(m))
+        rng, out = np.random.default_rng(seed), []
+        for k in range(steps):
+            lognormal.update(thr2, p, np.zeros(0), k, rng)
+            out.append(-5.0 * p.pathloss_exponent * np.log10(thr2[:m, :m][upper] / 1e6) / 3.0)
+        return out
+
+    normals = np.random.default_rng(seed).standard_normal((steps, len(upper[0])))
+    period, run, correlated = fades("period"), fades("run"), fades("correlated")
+    for k in range(steps):
+        np.testing.assert_allclose(period[k], normals[k // 2], atol=1e-9)
+        np.testing.assert_allclose(run[k], normals[0], atol=1e-9)
+    ends = np.array([int(a < n) + int(b < n) for a, b in zip(*upper, strict=True)])
+    rho = np.exp(-ends * 5.0 * 1.0 / 50.0)
+    z = normals[0]
+    np.testing.assert_allclose(correlated[0], z, atol=1e-9)
+    for k in range(1, steps):
+        z = rho * z + np.sqrt(1 - rho**2) * normals[k]
+        np.testing.assert_allclose(correlated[k], z, atol=1e-9)
+    assert correlated[-1][ends == 0] == pytest.approx(normals[0][ends == 0])
+
+
+def test_correlated_fades_are_stationary_normal_and_the_same_at_every_range() -> None:
+    """After many steps a link's correlated fade is still N(0, 1) in z (Gauss-Markov keeps
+    the variance), with the lag-one correlation exp(-2 V dt / d_c) of a drone-drone link; the
+    fades do not depend on r_c (issue 22's coupling across ranges relies on it)."""
+    m, steps = 4, 4000
+
+    def zs(rc: float) -> np.ndarray:
+        p = params(rc=rc, sigma=3.0, shadowing=int(SHADOWING_CODES["correlated"]))
+        thr2 = lognormal.init(p, np.zeros(0), m, padded(m))
+        rng, out = np.random.default_rng(1), []
+        for k in range(steps):
+            lognormal.update(thr2, p, np.zeros(0), k, rng)
+            out.append(np.log(thr2[0, 1] / rc**2))
+        return np.array(out)
+
+    a, b = zs(500.0), zs(2000.0)
+    np.testing.assert_allclose(a, b, rtol=1e-9, atol=1e-12)
+    z = a / (-math.log(10) / (5 * 1.75) * 3.0)
+    rho = math.exp(-2 * 5.0 / 50.0)
+    assert np.corrcoef(z[:-1], z[1:])[0, 1] == pytest.approx(rho, abs=0.03)
+    # z's variance over 4000 steps of an AR(1) with rho = 0.82: ~400 effective samples
+    assert z.var() == pytest.approx(1.0, abs=0.25)
+
+
+def test_a_run_s_own_mtsp_plan_is_the_plan_seeded_from_seed_and_run() -> None:
+    """``per-run``: run k flies the plan of ``plan_seed(seed, k)``, different from run to run;
+    ``shared``: every run flies the mission's one plan."""
+    small = {"planner": "mtsp", "drones": 3, "iterations": 200, "horizon": 1500.0}
+    own = Mission.build(mtsp_plan="per-run", **small)
+    shared = Mission.build(mtsp_plan="shared", **small)
+    for run in (0, 1):
+        direct = Mission.build(mtsp_plan="shared", plan_seed=plan_seed(7, run), **small)
+        a, b = simulate(own, seed=7, run=run), simulate(direct, seed=7, run=run)
+        assert (a.t_detect, a.t_notify) == (b.t_detect, b.t_notify)
+        np.testing.assert_array_equal(a.reach_cum, b.reach_cum)
+    routes = [prepare(own).steering.per_run(7, run) for run in (0, 1)]  # type: ignore[misc]
+    assert any(not np.array_equal(x, y) for x, y in zip(*routes, strict=True))
+    assert prepare(shared).steering.per_run is None
+
+
+def test_mtsp_conb_predicts_the_mtsp_drones_by_heading_or_along_their_paths() -> None:
+    """Drone 0 flies a route: 5 m west to (2895, 2000), then east. ConB drone 1, 990 m east
+    of it, flies north (r_c = 1000 m, the BS at the centre). Extrapolating drone 0's heading
+    (west), drone 1 is out of range of it two increments on (1000.05 m) and turns at once
+    towards their contact's end (Eq. 9); along drone 0's path (back east) it stays within
+    990.05 m and keeps flying north."""
+    route = np.array([[2895.0, 2000.0], [3500.0, 2000.0], [2000.0, 2000.0]])
+    scenario = Scenario(target=FAR_TARGET, positions=np.array([[2900.0, 2000.0],
+                                                               [3890.0, 2000.0]]),
+                        headings=np.array([math.pi, math.pi / 2]))
+
+    def heading_of_drone_1(prediction: str) -> tuple[float, float]:
+        mission = Mission.build(planner="mtsp-conb", drones=2, rc=1000.0, horizon=3.0,
+                                conb_check="continuous", mtsp_prediction=prediction)
+        prepared = Prepared.build(mission, Steering(rule=CONB, routes=(route,)))
+        trajectory = prepared.run(0, 0, scenario=scenario, trajectory=True).trajectory
+        assert trajectory is not None
+        angle = trajectory.headings[1, 1]
+        return math.cos(angle), math.sin(angle)
+
+    assert heading_of_drone_1("paths") == pytest.approx((0.0, 1.0))
+    # Eq. 9 by hand: drone 0 at (2900, 2000) with velocity (-5, 0), drone 1 at (3890, 2000)
+    # with (0, 5); the contact ends at tau with |p + w tau| = r_c
+    px, py, wx, wy = -990.0, 0.0, -5.0, -5.0
+    a, b, c = wx * wx + wy * wy, 2 * (px * wx + py * wy), px * px + py * py - 1000.0**2
+    tau = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
+    cx, cy = 2900.0 - 5.0 * tau, 2000.0
+    ux, uy = cx - 3890.0, cy - 2005.0
+    ux, uy = ux / math.hypot(ux, uy), uy / math.hypot(ux, uy)
+    rx, ry = ux, 1.0 + uy
+    assert heading_of_drone_1("heading") == pytest.approx((rx / math.hypot(rx, ry),
+                                                           ry / math.hypot(rx, ry)))

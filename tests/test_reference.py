@@ -28,6 +28,14 @@ CASES = {
     "conb-literal-home": {"planner": "conb", "reading": "literal", "isolated": "home"},
     "concov-sarlink-2-none": {"planner": "concov", "reading": "sarlink-2",
                               "concov_connected": "none"},
+    "covb-sarlink-2": {"planner": "covb", "reading": "sarlink-2"},
+    "conb-sarlink-2": {"planner": "conb", "reading": "sarlink-2"},
+    "covb-printed-random": {"planner": "covb", "covb_direction": "printed",
+                            "takeoff": "random"},
+    "conb-even-heading": {"planner": "conb", "takeoff": "even", "conb_fallback": "heading"},
+    "concov-direct-run-shadowing": {"planner": "concov", "sigma": 3.0, "shadowing": "run",
+                                    "reachability": "direct"},
+    "conb-period-shadowing": {"planner": "conb", "sigma": 3.0, "shadowing": "period"},
 }
 
 

@@ -106,10 +106,16 @@ class Channel(Checked):
     sigma: float = Field(0.0, ge=0, le=30, description="shadowing standard deviation, dB")
     pathloss_exponent: float = Field(1.75, gt=0, description="path-loss exponent n")
     coherence: float | None = Field(
-        None, gt=0, description="shadowing redraw period, s; None means t_s"
+        None, gt=0, description="shadowing redraw period, s, with readings.shadowing = "
+        "period; None means t_s"
     )
     altitude: float = Field(
         0.0, ge=0, description="drone altitude h, m, added to drone-ground link distances"
+    )
+    decorrelation: float = Field(
+        50.0, gt=0, description="shadowing decorrelation distance d_c, m: with readings."
+        "shadowing = correlated, a link's fades a distance x of flight apart correlate by "
+        "exp(-x / d_c)"
     )
 
 
@@ -162,6 +168,44 @@ class Readings(Checked):
         "heading",
         description="ConCov's connectivity term for a drone predicted to keep its route: its "
         "heading (Algorithm 2), or none (coverage alone steers it)",
+    )
+    takeoff: Literal["even", "random", "jitter"] = Field(
+        "jitter",
+        description="the distributed drones' take-off headings: even: exactly evenly spaced, "
+        "2πk/N plus one random offset per run; random: independent uniform headings; "
+        "jitter: evenly spaced, each off by a uniform error of at most TAKEOFF_JITTER",
+    )
+    conb_fallback: Literal["contact", "heading"] = Field(
+        "contact",
+        description="ConB's heading when Eq. 9's two unit terms cancel (a drone flying straight "
+        "away from its contact): contact: turn to θ_ij (a reversal); heading: keep it",
+    )
+    covb_direction: Literal["push", "printed"] = Field(
+        "push",
+        description="Eq. 8's neighbour term: push: from j to i, neighbours push (the text); "
+        "printed: θ_ij from i to j as Eq. 8 is printed (neighbours pull)",
+    )
+    shadowing: Literal["period", "run", "correlated"] = Field(
+        "correlated",
+        description="how log-normal fades change (sigma > 0): period: drawn anew per link "
+        "every coherence time; run: one fade per link for the whole run; correlated: each "
+        "link's fade decorrelates with the distance its ends fly (Gudmundson, "
+        "channel.decorrelation)",
+    )
+    reachability: Literal["direct", "multihop"] = Field(
+        "multihop",
+        description="target reachability: direct: a target-BS link counts; multihop: only a "
+        "route over the drones",
+    )
+    mtsp_plan: Literal["shared", "per-run"] = Field(
+        "per-run",
+        description="mTSP plans: shared: one GA plan per team size for every run; per-run: a "
+        "GA plan per run, seeded from (seed, run)",
+    )
+    mtsp_prediction: Literal["heading", "paths"] = Field(
+        "paths",
+        description="how mTSP-ConB's ConB drones predict the mTSP drones: heading: each keeps "
+        "its heading; paths: each flies on along its known tour",
     )
 
 

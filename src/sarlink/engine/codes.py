@@ -101,3 +101,66 @@ class Connected(IntEnum):
 
 
 CONNECTED_CODES = {"heading": Connected.HEADING, "none": Connected.NONE}
+
+
+class Takeoff(IntEnum):
+    """How the distributed drones' take-off headings are spread (docs/model.md, Readings)."""
+
+    EVEN = 0  # exactly evenly spaced, one random offset per run
+    RANDOM = 1  # independent uniform headings
+    JITTER = 2  # evenly spaced, each off by a small uniform error
+
+
+TAKEOFF_CODES = {"even": Takeoff.EVEN, "random": Takeoff.RANDOM, "jitter": Takeoff.JITTER}
+
+
+class ConbFallback(IntEnum):
+    """ConB's heading when Eq. 9's two unit terms cancel."""
+
+    CONTACT = 0  # turn to θ_ij
+    HEADING = 1  # keep the heading
+
+
+CONB_FALLBACK_CODES = {"contact": ConbFallback.CONTACT, "heading": ConbFallback.HEADING}
+
+
+class CovbDirection(IntEnum):
+    """The direction of Eq. 8's neighbour term."""
+
+    PUSH = 0  # from j to i: neighbours push (the text)
+    PRINTED = 1  # from i to j, as Eq. 8 is printed: neighbours pull
+
+
+COVB_DIRECTION_CODES = {"push": CovbDirection.PUSH, "printed": CovbDirection.PRINTED}
+
+
+class Shadowing(IntEnum):
+    """How log-normal fades change over a run."""
+
+    PERIOD = 0  # drawn anew per link every coherence time
+    RUN = 1  # one fade per link for the whole run
+    CORRELATED = 2  # Gudmundson: decorrelating with the distance flown
+
+
+SHADOWING_CODES = {"period": Shadowing.PERIOD, "run": Shadowing.RUN,
+                   "correlated": Shadowing.CORRELATED}
+
+
+class Reachability(IntEnum):
+    """Which routes make the target reachable."""
+
+    DIRECT = 0  # a target-BS link counts
+    MULTIHOP = 1  # only a route over the drones
+
+
+REACHABILITY_CODES = {"direct": Reachability.DIRECT, "multihop": Reachability.MULTIHOP}
+
+
+class Prediction(IntEnum):
+    """How mTSP-ConB's ConB drones predict the drones that fly routes."""
+
+    HEADING = 0  # each keeps its heading
+    PATHS = 1  # each flies on along its known route
+
+
+PREDICTION_CODES = {"heading": Prediction.HEADING, "paths": Prediction.PATHS}

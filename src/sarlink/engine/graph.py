@@ -11,6 +11,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from sarlink.engine.codes import Reachability
+
+_DIRECT = int(Reachability.DIRECT)
 _ZERO = np.uint64(0)
 _ONE = np.uint64(1)
 _DEBRUIJN = np.uint64(0x03F79D71B4CB0A89)
@@ -164,10 +167,15 @@ def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.nda
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def reachability(adj: np.ndarray, routed: np.ndarray, n: int) -> tuple[bool, int]:
-    """Whether the target has a route to the BS, and how many drones have one."""
+def reachability(adj: np.ndarray, routed: np.ndarray, n: int,
+                 how: int = _DIRECT) -> tuple[bool, int]:
+    """Whether the target has a route to the BS, and how many drones have one.
+
+    ``how`` is ``readings.reachability``'s code (:class:`~sarlink.engine.codes.Reachability`):
+    whether a direct target-BS link counts, or only a route over the drones.
+    """
     tg = n + 1
-    reachable = linked(adj, tg, n)
+    reachable = how == _DIRECT and linked(adj, tg, n)
     connected = 0
     for i in range(n):
         if has(routed, i):

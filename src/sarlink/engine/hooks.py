@@ -15,7 +15,8 @@ Hook signatures (``p`` is :class:`~sarlink.engine.params.Params`, ``obs`` an
 - rule ``decide(k, p, obs, ws, deciding, vx, vy) -> None``: write the new unit direction
   ``(vx[i], vy[i])`` of every drone ``i`` with ``deciding[i]``; the boundary rule applies after;
 - radio ``init(p, rp, m, mp) -> thr2``: the squared link range of every pair of the ``m``
-  nodes, shape ``(m, mp)`` (zero towards the ``mp - m`` padding nodes);
+  nodes in its first ``m`` rows, shape ``(m, mp)`` (zero towards the ``mp - m`` padding
+  nodes); rows past ``m``, if any, are the model's own state (the links never read them);
 - radio ``update(thr2, p, rp, k, rng) -> None``: refill ``thr2`` at step ``k`` where it changes;
 - radio ``nominal(p, rp) -> float``: the range planners predict with, m;
 - radio ``static(p, rp) -> bool`` (or a plain ``bool``): whether ``thr2`` never changes after

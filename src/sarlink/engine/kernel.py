@@ -97,7 +97,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
     goal_x, goal_y = np.full(n, np.nan), np.full(n, np.nan)  # that point, on a polygon area
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
-                      spread, radio_nominal(p, rp))
+                      spread, radio_nominal(p, rp), wp, wp_next, wp_end)
     ws = rule_prepare(p, obs)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
@@ -129,7 +129,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         graph.bs_component(adj, n, routed, stack)
         if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
             t_not = t
-        reachable, connected = graph.reachability(adj, routed, n)
+        reachable, connected = graph.reachability(adj, routed, n, p.reachability)
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)

@@ -50,3 +50,10 @@ class Observation(NamedTuple):
     rc: float
     """The nominal communication range, m: the range planners predict with (the radio
     model's; shadow-free)."""
+    wp: np.ndarray
+    """Every route's waypoints, ``(k, 2)`` (x, y), m: drone ``i``'s still ahead of it are
+    ``wp[wp_next[i]:wp_end[i]]`` (none for a distributed drone)."""
+    wp_next: np.ndarray
+    """Index in ``wp`` of every drone's next waypoint (int64)."""
+    wp_end: np.ndarray
+    """One past the index of every drone's last waypoint (int64)."""

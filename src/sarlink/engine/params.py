@@ -6,14 +6,19 @@ from typing import NamedTuple
 
 from sarlink.engine.codes import (
     Check,
+    ConbFallback,
     Connected,
     Contacts,
+    CovbDirection,
     Fallback,
     Isolated,
     Look,
     Mode,
     OnDetect,
+    Prediction,
+    Reachability,
     Reporters,
+    Shadowing,
     Stop,
 )
 
@@ -31,6 +36,12 @@ ALL_CONTACTS = int(Contacts.ALL)
 ISOLATED_HOME = int(Isolated.HOME)
 FALLBACK_CONNECTIVITY = int(Fallback.CONNECTIVITY)
 CONNECTED_NONE = int(Connected.NONE)
+CONB_KEEP_HEADING = int(ConbFallback.HEADING)
+COVB_PRINTED = int(CovbDirection.PRINTED)
+SHADOW_RUN = int(Shadowing.RUN)
+SHADOW_CORRELATED = int(Shadowing.CORRELATED)
+REACH_MULTIHOP = int(Reachability.MULTIHOP)
+PREDICT_PATHS = int(Prediction.PATHS)
 
 
 class Params(NamedTuple):
@@ -49,6 +60,7 @@ class Params(NamedTuple):
     sigma: float
     pathloss_exponent: float
     altitude: float
+    decorrelation: float
     dt: float
     ts_steps: int
     coherence_steps: int
@@ -62,3 +74,8 @@ class Params(NamedTuple):
     isolated: int
     concov_fallback: int
     concov_connected: int
+    conb_fallback: int
+    covb_direction: int
+    shadowing: int
+    reachability: int
+    mtsp_prediction: int

@@ -3,7 +3,7 @@ kernel's record into a :class:`~sarlink.RunResult`."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -15,13 +15,18 @@ from sarlink.engine.area import edge_array
 from sarlink.engine.build import kernel_for
 from sarlink.engine.codes import (
     CHECK_CODES,
+    CONB_FALLBACK_CODES,
     CONNECTED_CODES,
     CONTACTS_CODES,
+    COVB_DIRECTION_CODES,
     FALLBACK_CODES,
     ISOLATED_CODES,
     LOOK_CODES,
     ON_DETECT_CODES,
+    PREDICTION_CODES,
+    REACHABILITY_CODES,
     REPORTERS_CODES,
+    SHADOWING_CODES,
     STOP_CODES,
 )
 from sarlink.engine.params import Params
@@ -83,7 +88,8 @@ class Prepared:
             p_miss=mission.sensing.p_miss, look=int(LOOK_CODES[mission.sensing.look]),
             rc=mission.channel.rc, sigma=mission.channel.sigma,
             pathloss_exponent=mission.channel.pathloss_exponent,
-            altitude=mission.channel.altitude, dt=t.dt, ts_steps=mission.steps(t.ts),
+            altitude=mission.channel.altitude, decorrelation=mission.channel.decorrelation,
+            dt=t.dt, ts_steps=mission.steps(t.ts),
             coherence_steps=mission.steps(mission.coherence), n_steps=mission.n_steps,
             stop=int(STOP_CODES[t.stop]), record=False,
             on_detect=int(ON_DETECT_CODES[mission.team.on_detect]),
@@ -92,6 +98,11 @@ class Prepared:
             isolated=int(ISOLATED_CODES[r.isolated]),
             concov_fallback=int(FALLBACK_CODES[r.concov_fallback]),
             concov_connected=int(CONNECTED_CODES[r.concov_connected]),
+            conb_fallback=int(CONB_FALLBACK_CODES[r.conb_fallback]),
+            covb_direction=int(COVB_DIRECTION_CODES[r.covb_direction]),
+            shadowing=int(SHADOWING_CODES[r.shadowing]),
+            reachability=int(REACHABILITY_CODES[r.reachability]),
+            mtsp_prediction=int(PREDICTION_CODES[r.mtsp_prediction]),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
@@ -113,7 +124,8 @@ class Prepared:
             pos0 = np.asarray(scenario.positions, dtype=float)
         return (self.params._replace(record=trajectory), self.radio_params,
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
-                takeoff_headings(scenario, self.distributed), self.waypoints, self.wp_start,
+                takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
+                                 streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, self.edges, self.nav,
                 self.far)
 
@@ -137,7 +149,12 @@ class Prepared:
 
     def run(self, seed: int = 0, run: int = 0, *, scenario: Scenario | None = None,
             trajectory: bool = False) -> RunResult:
-        """Simulate run ``run`` of an experiment seeded with ``seed``."""
+        """Simulate run ``run`` of an experiment seeded with ``seed`` (with that run's own
+        routes if the steering makes them per run)."""
+        if self.steering.per_run is not None:
+            own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
+            return Prepared.build(self.mission, own).run(seed, run, scenario=scenario,
+                                                         trajectory=trajectory)
         streams = run_streams(seed, run)
         if scenario is None:
             scenario = draw_scenario(self.mission, streams.scenario)

@@ -64,12 +64,33 @@ def draw_scenario(mission: Mission, rng: np.random.Generator) -> Scenario:
     return Scenario(target=(x, y), heading_offset=rng.random() * 2 * math.pi)
 
 
-def takeoff_headings(scenario: Scenario, distributed: np.ndarray) -> np.ndarray:
-    """Take-off headings: evenly spaced over the distributed drones, rotated by the offset."""
+TAKEOFF_JITTER = math.radians(5.0)
+"""Largest heading error of a drone at take-off (``readings.takeoff = jitter``): a few degrees,
+what a drone's compass and heading control hold (docs/model.md, Readings)."""
+
+
+def takeoff_headings(scenario: Scenario, distributed: np.ndarray, takeoff: str = "even",
+                     rng: np.random.Generator | None = None) -> np.ndarray:
+    """Take-off headings of the distributed drones, by ``readings.takeoff``: evenly spaced and
+    rotated by the scenario's offset (``even``), each then off by a uniform error of at most
+    :data:`TAKEOFF_JITTER` (``jitter``), or independent and uniform (``random``). The random
+    draws come from ``rng`` (the run's take-off stream), one per drone, so a team's draws
+    depend on neither its rule nor which drones fly routes."""
     if scenario.headings is not None:
         return np.asarray(scenario.headings, dtype=float)
     headings = np.zeros(distributed.size)
     k = int(distributed.sum())
-    if k:
+    if k == 0:
+        return headings
+    if takeoff == "even":
         headings[distributed] = 2 * math.pi * np.arange(k) / k + scenario.heading_offset
+        return headings
+    if rng is None:
+        raise ValueError(f"readings.takeoff = {takeoff!r} draws from the run's take-off stream")
+    u = rng.random(distributed.size)[distributed]
+    if takeoff == "random":
+        headings[distributed] = 2 * math.pi * u
+    else:
+        headings[distributed] = (2 * math.pi * np.arange(k) / k + scenario.heading_offset
+                                 + TAKEOFF_JITTER * (2 * u - 1))
     return headings

@@ -2,7 +2,8 @@
 
 Each purpose has its own stream, so switching a feature off (``sigma = 0``, ``p_miss = 0``)
 leaves every other draw of the run unchanged, and a run's result never depends on which
-process ran it or in which order.
+process ran it or in which order. A stream added later is spawned after the others, so the
+draws of the earlier ones stay what they were.
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ class Streams(NamedTuple):
     turn: np.random.Generator  # boundary turns
     shadow: np.random.Generator  # shadow fading per link
     look: np.random.Generator  # imperfect-sensing looks
+    takeoff: np.random.Generator  # take-off headings (readings.takeoff random, jitter)
+    plan: np.random.Generator  # the seed of a run's own mTSP plan (readings.mtsp_plan per-run)
 
 
 def run_streams(seed: int, run: int) -> Streams:
@@ -25,3 +28,8 @@ def run_streams(seed: int, run: int) -> Streams:
         raise ValueError(f"seed and run must be >= 0, got seed={seed}, run={run}")
     children = np.random.SeedSequence(seed, spawn_key=(run,)).spawn(len(Streams._fields))
     return Streams(*(np.random.Generator(np.random.PCG64(c)) for c in children))
+
+
+def plan_seed(seed: int, run: int) -> int:
+    """The seed of run ``run``'s own mTSP plan (``readings.mtsp_plan = per-run``)."""
+    return int(run_streams(seed, run).plan.integers(2**63 - 1))

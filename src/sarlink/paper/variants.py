@@ -5,8 +5,8 @@ choices reach only some planners (ConB's connectivity check changes nothing for 
 every experiment is swept one planner at a time, in a folder named after the choices that
 reach that planner: ``runs/<experiment>/<planner>/<values>``. Two readings that agree on what
 reaches a planner share its runs, so the sensitivity analysis, which changes one choice at a
-time, reruns only the planners that choice reaches. A choice that reaches no planner of a
-team is stored with its ``sarlink-1`` value, on which it has no effect.
+time, reruns only the planners that choice reaches (:func:`reaches`). A choice that reaches
+no planner of a team is stored with its ``sarlink-1`` value, on which it has no effect.
 """
 
 from __future__ import annotations
@@ -25,16 +25,32 @@ from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import EXPERIMENTS, PaperExperiment
 from sarlink.paper.findings import Finding, Settings, check_all
 from sarlink.paper.report import Stage
-from sarlink.planners import get_planner
+from sarlink.planners import Planner, get_planner
 from sarlink.storage import load
 
-__all__ = ["FIG3_TDS", "Variant", "load_runs", "reading_tables", "sensitivity", "variants"]
+__all__ = ["FIG3_TDS", "Variant", "load_runs", "reaches", "reading_tables", "sensitivity",
+           "variants"]
 
 FIG3_TDS = (1000.0, 2000.0, 4000.0)
 """The candidates for Fig. 3's unstated t_d, s: those the main table holds."""
 
 _NEUTRAL = READINGS["sarlink-1"].choices
 """The values stored for choices that cannot reach a planner."""
+
+
+def reaches(planner: Planner, experiment: Experiment) -> list[str]:
+    """The choices of :class:`~sarlink.config.mission.Readings` that can change ``planner``'s
+    runs in ``experiment``: its rule's, target reachability (every planner's), the mTSP plan's
+    (a planner that flies one), the prediction of the mTSP drones (a hybrid that flies one) and,
+    where a point has shadowing, how the fades change."""
+    rule = planner.rule.readings if planner.rule is not None else ()
+    mtsp = bool(getattr(planner, "mtsp", False))
+    sigmas = [experiment.mission.channel.sigma, *experiment.grid.get("sigma", [])]
+    wanted = {*rule, "reachability",
+              *(["mtsp_plan"] if mtsp else []),
+              *(["mtsp_prediction"] if mtsp and planner.rule is not None else []),
+              *(["shadowing"] if any(float(v) > 0 for v in sigmas) else [])}
+    return [c for c in _NEUTRAL if c in wanted]
 
 
 def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
@@ -44,7 +60,7 @@ def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
     grid = {k: v for k, v in experiment.grid.items() if k != "planner"}
     for name in experiment.grid["planner"]:
         planner = get_planner(name)
-        reach = [c for c in _NEUTRAL if planner.rule is not None and c in planner.rule.readings]
+        reach = reaches(planner, experiment)
         mission = experiment.mission.replace(
             planner=name, **{c: choices[c] if c in reach else _NEUTRAL[c] for c in _NEUTRAL})
         values = "-".join(choices[c] for c in reach) or "any"

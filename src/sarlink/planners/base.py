@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import TYPE_CHECKING, Any, Literal, Protocol
 
 import numpy as np
@@ -21,6 +22,7 @@ from sarlink.config import ConfigError
 from sarlink.config.region import EDGE, area_polygon, is_polygon
 from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.steering import Steering
+from sarlink.engine.streams import plan_seed
 
 if TYPE_CHECKING:
     from sarlink.config import Mission
@@ -122,6 +124,21 @@ def checked_routes(planner: str, routes: Sequence[Any], mission: Mission, *,
     return tuple(out)
 
 
+def _own_routes(planner: RoutePlanner | RulePlanner, mission: Mission, seed: int,
+                run: int) -> tuple[np.ndarray, ...]:
+    """The routes of run ``run``: its own mTSP plan, seeded from ``(seed, run)``."""
+    return planner.steering(mission.replace(plan_seed=plan_seed(seed, run))).routes
+
+
+def _per_run(planner: RoutePlanner | RulePlanner, mission: Mission
+             ) -> Callable[[int, int], tuple[np.ndarray, ...]] | None:
+    """Each run's own routes, if the planner flies an mTSP plan and the mission plans per run
+    (``readings.mtsp_plan``)."""
+    if planner.mtsp and mission.readings.mtsp_plan == "per-run":
+        return partial(_own_routes, planner, mission)
+    return None
+
+
 @dataclass(frozen=True)
 class RoutePlanner:
     """A planner that gives every drone a route before take-off: ``routes(mission)`` returns
@@ -133,6 +150,8 @@ class RoutePlanner:
     routes: Routes
     colour: str = "#7f7f7f"
     marker: str = "o"
+    mtsp: bool = False
+    """Whether its routes are an mTSP plan (``readings.mtsp_plan``: one per run or shared)."""
 
     @property
     def kind(self) -> Literal["route"]:
@@ -148,7 +167,8 @@ class RoutePlanner:
         """Every drone's checked route (:func:`checked_routes`)."""
         routes = _call(self.name, self.routes, mission)
         return Steering(rule=None, routes=checked_routes(self.name, routes, mission,
-                                                        every_drone=True))
+                                                        every_drone=True),
+                        per_run=_per_run(self, mission))
 
 
 @dataclass(frozen=True)
@@ -162,6 +182,8 @@ class RulePlanner:
     colour: str = "#7f7f7f"
     marker: str = "o"
     routes: Routes | None = None
+    mtsp: bool = False
+    """Whether its routes are an mTSP plan (``readings.mtsp_plan``: one per run or shared)."""
 
     @property
     def kind(self) -> Literal["rule", "hybrid"]:
@@ -174,4 +196,5 @@ class RulePlanner:
             return Steering(rule=self.rule)
         routes = _call(self.name, self.routes, mission)
         return Steering(rule=self.rule, routes=checked_routes(self.name, routes, mission,
-                                                             every_drone=False))
+                                                             every_drone=False),
+                        per_run=_per_run(self, mission))

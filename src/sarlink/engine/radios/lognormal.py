@@ -2,9 +2,15 @@
 ``sigma = 0``.
 
 A link exists where the path loss plus a fade ``S`` stays within the budget of the range r_c,
-``10 n log10(d / r_c) + S <= 0``. Every pair's fade is drawn anew each coherence time
-(``channel.coherence``, default t_s), independently per link and of r_c: ``S = sigma * z`` with
-``z`` standard normal, so the draws of a run are the same at every range. With ``sigma = 0``
+``10 n log10(d / r_c) + S <= 0``, ``S = sigma * z`` with ``z`` standard normal per link,
+drawn independently of r_c, so the draws of a run are the same at every range. How ``z``
+changes is ``readings.shadowing``: drawn anew each coherence time (``period``;
+``channel.coherence``, default t_s), once per run (``run``), or every step as a Gauss-Markov
+process in the distance flown (``correlated``, Gudmundson's exponential correlation
+``exp(-x / d_c)``, ``channel.decorrelation``): each flying end of a link moves ``V dt`` per
+step, so ``z`` keeps ``rho = exp(-k V dt / d_c)`` of itself, ``k`` the link's drone ends (the
+BS-target link never changes); the state ``z`` of pair ``(a, b)`` lives in row ``m + a`` of
+the threshold array, past the rows the links read. With ``sigma = 0``
 nothing is drawn and every threshold is ``r_c²`` for the whole run: the disc, whose links
 never change (a settled team may then jump to the horizon). The two cases are one model, so
 that they compile into one kernel. Planners predict with the shadow-free range r_c.
@@ -17,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine.params import Params
+from sarlink.engine.params import SHADOW_CORRELATED, SHADOW_RUN, Params
 
 _LN10 = math.log(10.0)
 
@@ -49,14 +55,48 @@ def draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> Non
 
 @njit(cache=True, inline="always", error_model="numpy")
 def init(p: Params, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
-    """The shadow-free ranges ``r_c²``; the fades are drawn from step 0 (:func:`update`)."""
-    return disc_ranges(p.rc, m, mp)
+    """The shadow-free ranges ``r_c²``; the fades are drawn from step 0 (:func:`update`).
+    Correlated fades keep their normal state in ``m`` more rows."""
+    thr2 = disc_ranges(p.rc, m, mp)
+    if p.sigma > 0.0 and p.shadowing == SHADOW_CORRELATED:
+        state = np.zeros((2 * m, mp))
+        state[:m] = thr2
+        return state
+    return thr2
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def drift_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator, first: bool) -> None:
+    """One step of the correlated fades: ``z <- rho z + sqrt(1 - rho²) e`` (``z = e`` at the
+    first step), ``rho`` by the number of drone ends of the link, then the ranges."""
+    m = thr2.shape[0] // 2
+    n = m - 2
+    rc2 = p.rc * p.rc
+    scale = -_LN10 / (5.0 * p.pathloss_exponent)
+    moved = p.speed * p.dt / p.decorrelation
+    for a in range(m):
+        for b in range(a + 1, m):
+            ends = (1 if a < n else 0) + (1 if b < n else 0)
+            e = rng.standard_normal()
+            if first:
+                z = e
+            else:
+                rho = math.exp(-ends * moved)
+                z = rho * thr2[m + a, b] + math.sqrt(1.0 - rho * rho) * e
+            thr2[m + a, b] = z
+            v = rc2 * math.exp(scale * p.sigma * z)
+            thr2[a, b] = v
+            thr2[b, a] = v
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def update(thr2: np.ndarray, p: Params, rp: np.ndarray, k: int, rng: np.random.Generator) -> None:
-    """New fades every coherence time (none with ``sigma = 0``)."""
-    if p.sigma > 0.0 and k % p.coherence_steps == 0:
+    """New fades by ``readings.shadowing`` (none with ``sigma = 0``)."""
+    if p.sigma == 0.0:
+        return
+    if p.shadowing == SHADOW_CORRELATED:
+        drift_shadowing(thr2, p, rng, k == 0)
+    elif k == 0 or (p.shadowing != SHADOW_RUN and k % p.coherence_steps == 0):
         draw_shadowing(thr2, p, rng)
 
 
@@ -68,5 +108,6 @@ def nominal(p: Params, rp: np.ndarray) -> float:
 
 @njit(cache=True, inline="always", error_model="numpy")
 def static(p: Params, rp: np.ndarray) -> bool:
-    """Whether the links never change: the disc, ``sigma = 0``."""
-    return p.sigma == 0.0
+    """Whether the links never change after step 0: the disc, ``sigma = 0``, or one fade per
+    link for the run."""
+    return p.sigma == 0.0 or p.shadowing == SHADOW_RUN

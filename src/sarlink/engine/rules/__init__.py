@@ -7,14 +7,17 @@ from sarlink.engine.rules import conb, concov, covb
 
 __all__ = ["CONB", "CONCOV", "COVB"]
 
-_CONB_READINGS = ("conb_check", "contacts", "isolated")
+_CONB_READINGS = ("conb_check", "contacts", "isolated", "conb_fallback", "takeoff")
+_COVB_READINGS = ("covb_direction", "takeoff")
 
-COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True)
+COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True,
+                       readings=_COVB_READINGS)
 """CovB's repulsion (Eqs. 6-8)."""
 CONB = DistributedRule("conb", conb.decide, prepare=conb.prepare, due=conb.due,
                        readings=_CONB_READINGS)
 """ConB's attachment to the BS (Eqs. 9-11)."""
 CONCOV = DistributedRule("concov", concov.decide, prepare=concov.prepare, due=concov.due,
                          near=True,
-                         readings=(*_CONB_READINGS, "concov_fallback", "concov_connected"))
+                         readings=(*_CONB_READINGS, "covb_direction", "concov_fallback",
+                                   "concov_connected"))
 """ConCov's blend of the two (Eq. 12)."""

@@ -23,9 +23,11 @@ from sarlink.engine.graph import add, bit, drop, push_new
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
+    CONB_KEEP_HEADING,
     CONTINUOUS,
     ISOLATED_HOME,
     LANDED,
+    PREDICT_PATHS,
     SEARCHING,
     Params,
 )
@@ -57,13 +59,32 @@ def workspace(obs: Observation) -> Workspace:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def along_route(j: int, px: np.ndarray, py: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
+                wp_end: np.ndarray, ahead: float) -> tuple[float, float]:
+    """Where route drone ``j`` will be ``ahead`` metres on along its waypoints (at its last
+    one, the BS, if the route ends before): what :func:`sarlink.engine.motion.fly_route`
+    flies, step by step."""
+    x, y = px[j], py[j]
+    for k in range(wp_next[j], wp_end[j]):
+        dx, dy = wp[k, 0] - x, wp[k, 1] - y
+        d = math.sqrt(dx * dx + dy * dy)
+        if d > ahead:
+            return x + ahead * dx / d, y + ahead * dy / d
+        x, y = wp[k, 0], wp[k, 1]
+        ahead -= d
+    return x, y
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     pz: np.ndarray, p: Params, steps: int, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
-    out: np.ndarray, stack: np.ndarray,
+    out: np.ndarray, stack: np.ndarray, on_route: np.ndarray, wp: np.ndarray,
+    wp_next: np.ndarray, wp_end: np.ndarray,
 ) -> None:
     """Who reaches the BS ``steps`` increments ahead if every node keeps its heading
-    (shadow-free range).
+    (shadow-free range); with ``mtsp_prediction = paths`` a searching drone on a route
+    (``on_route``, waypoints ``wp[wp_next[j]:wp_end[j]]``) flies on along it instead.
 
     A breadth-first search from the BS that computes a node's links only when it reaches
     the node: the links of nodes cut off from the BS are never needed.
@@ -72,11 +93,15 @@ def predict_routes(
     m = n + 2
     mp = qx.shape[0]
     ahead = p.speed * steps * p.dt
+    paths = p.mtsp_prediction == PREDICT_PATHS
     for j in range(m):
         qx[j], qy[j] = px[j], py[j]
         if j < n and mode[j] != LANDED:
-            qx[j] += ahead * hx[j]
-            qy[j] += ahead * hy[j]
+            if paths and on_route[j] and mode[j] == SEARCHING:
+                qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
+            else:
+                qx[j] += ahead * hx[j]
+                qy[j] += ahead * hy[j]
     out[:] = 0
     add(out, n)
     add(out, n + 1)  # the target relays nothing
@@ -106,7 +131,8 @@ def check_continuously(
     k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     on_route: np.ndarray, pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray,
     disc2: np.ndarray, routed_next: np.ndarray, routed_step: np.ndarray, stack: np.ndarray,
-    deciding: np.ndarray, last_change: np.ndarray,
+    deciding: np.ndarray, last_change: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
+    wp_end: np.ndarray,
 ) -> bool:
     """ConB's connectivity check read as Section 3.2 words it (``conb_check = continuous``).
 
@@ -117,9 +143,11 @@ def check_continuously(
     routed at all of them, and a searching distributed drone outside it decides now (its
     clock restarts). Returns whether any drone decides this step.
     """
-    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, stack)
+    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, stack, on_route,
+                   wp, wp_next, wp_end)
     for s in range(2, p.ts_steps + 1):
-        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, stack)
+        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, stack,
+                       on_route, wp, wp_next, wp_end)
         for w in range(routed_next.shape[0]):
             routed_next[w] &= routed_step[w]
     any_deciding = False
@@ -143,8 +171,10 @@ def conb_headings(
     A drone keeps its heading if it is predicted to keep its route to the BS (``routed_next``;
     the term is zero instead with ``no_term``: ConCov's ``concov_connected = none``); else it
     steers towards where the neighbour with the longest contact (among those predicted to keep
-    a route to the BS, if any, with ``contacts = routed``) would be when the contact ends; a
-    drone without neighbours keeps its heading or, with ``isolated = home``, turns to the BS.
+    a route to the BS, if any, with ``contacts = routed``) would be when the contact ends (if
+    the two unit terms cancel, it turns to that point or, with ``conb_fallback = heading``,
+    keeps its heading); a drone without neighbours keeps its heading or, with
+    ``isolated = home``, turns to the BS.
     A neighbour's route "without i" is its route in the predicted graph: ``i`` is not in the
     BS's predicted component here, so removing it changes nothing.
     """
@@ -198,8 +228,10 @@ def conb_headings(
         nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
         ux, uy = unit(cx - nx, cy - ny, hx[i], hy[i])
         rx, ry = hx[i] + ux, hy[i] + uy
-        if math.sqrt(rx * rx + ry * ry) >= 1e-9:  # else flying straight away from the contact
+        if math.sqrt(rx * rx + ry * ry) >= 1e-9:
             ux, uy = unit(rx, ry, ux, uy)
+        elif p.conb_fallback == CONB_KEEP_HEADING:  # flying straight away from the contact
+            ux, uy = hx[i], hy[i]
         vx[i], vy[i] = ux, uy
 
 
@@ -222,7 +254,8 @@ def due(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray
         return any_deciding
     return check_continuously(k, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.on_route, obs.pz,
                               p, ws.qx, ws.qy, ws.disc2, ws.routed_next, ws.routed_step,
-                              ws.stack, deciding, obs.last_change)
+                              ws.stack, deciding, obs.last_change, obs.wp, obs.wp_next,
+                              obs.wp_end)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -232,7 +265,8 @@ def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
     unless the continuous check already did."""
     if p.conb_check != CONTINUOUS:
         predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, p.ts_steps, ws.qx,
-                       ws.qy, ws.disc2, ws.routed_next, ws.stack)
+                       ws.qy, ws.disc2, ws.routed_next, ws.stack, obs.on_route, obs.wp,
+                       obs.wp_next, obs.wp_end)
     conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
                   p, obs.rc, no_term, vx, vy)
 

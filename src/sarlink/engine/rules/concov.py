@@ -14,7 +14,12 @@ from numba import njit
 
 from sarlink.engine.geometry import unit
 from sarlink.engine.observation import Observation
-from sarlink.engine.params import CONNECTED_NONE, FALLBACK_CONNECTIVITY, Params
+from sarlink.engine.params import (
+    CONNECTED_NONE,
+    COVB_PRINTED,
+    FALLBACK_CONNECTIVITY,
+    Params,
+)
 from sarlink.engine.rules import conb, covb
 
 
@@ -78,5 +83,5 @@ def decide(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndar
             cx, cy = obs.hx[i], obs.hy[i]
             if p.alpha > 0.0:
                 cx, cy = covb.covb_force(i, obs.px, obs.py, obs.hx, obs.hy, obs.near, ws.flying,
-                                         p.r)
+                                         p.r, p.covb_direction == COVB_PRINTED)
             vx[i], vy[i] = blend(p, cx, cy, ws.con_x[i], ws.con_y[i], obs.hx[i], obs.hy[i])

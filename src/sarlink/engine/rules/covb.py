@@ -13,17 +13,20 @@ from numba import njit
 from sarlink.engine.geometry import unit
 from sarlink.engine.graph import add, lowest
 from sarlink.engine.observation import Observation
-from sarlink.engine.params import LANDED, Params
+from sarlink.engine.params import COVB_PRINTED, LANDED, Params
 
 _ONE = np.uint64(1)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def covb_force(i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
-               near: np.ndarray, flying: np.ndarray, r: float) -> tuple[float, float]:
+               near: np.ndarray, flying: np.ndarray, r: float,
+               printed: bool) -> tuple[float, float]:
     """Unit direction of Eq. 6 for drone ``i``: own heading / r plus a 1/d push from each
-    flying drone within r (``near & flying``), added in increasing drone order. No
-    neighbour: keep the heading."""
+    flying drone within r (``near & flying``), added in increasing drone order; a pull
+    towards it with ``printed`` (Eq. 8's θ_ij as printed, from i to j:
+    ``readings.covb_direction``). No neighbour: keep the heading."""
+    sign = -1.0 if printed else 1.0
     fx, fy = hx[i] / r, hy[i] / r
     neighbours = False
     for w in range(flying.shape[0]):
@@ -36,8 +39,8 @@ def covb_force(i: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.nd
             dy = py[i] - py[j]
             dd = dx * dx + dy * dy
             if dd >= 1.0:  # (1/d) * (p_i - p_j)/d; pairs closer than 1 m exert no force
-                fx += dx / dd
-                fy += dy / dd
+                fx += sign * dx / dd
+                fy += sign * dy / dd
     ux, uy = hx[i], hy[i]
     if neighbours:
         ux, uy = unit(fx, fy, ux, uy)
@@ -67,4 +70,5 @@ def decide(k: int, p: Params, obs: Observation, flying: np.ndarray, deciding: np
     px, py, hx, hy, near = obs.px, obs.py, obs.hx, obs.hy, obs.near
     for i in range(deciding.shape[0]):
         if deciding[i]:
-            vx[i], vy[i] = covb_force(i, px, py, hx, hy, near, flying, p.r)
+            vx[i], vy[i] = covb_force(i, px, py, hx, hy, near, flying, p.r,
+                                      p.covb_direction == COVB_PRINTED)
