@@ -39,6 +39,7 @@ ENGINE = Path(__file__).resolve().parent
 _BLOCK = re.compile(r"# ---- plug-ins: .*?# ---- end of plug-ins ----\n", re.DOTALL)
 _STEP = re.compile(r"^( *)# ---- stepping form: .*$", re.MULTILINE)
 _RETURN = re.compile(r"^    return RunRecord\(", re.MULTILINE)
+_DECORATOR = re.compile(r"^@njit\((.*)\)\ndef simulate_kernel\(", re.MULTILINE)
 STEP_STATE = "k, obs, ws, deciding, nhx, nhy"
 """What the stepping form yields, by the kernel's own names: the step, the
 :class:`~sarlink.engine.observation.Observation`, the rule's workspace, who decides, and the new
@@ -77,12 +78,17 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel) -> str:
 def stepping_source(text: str) -> str:
     """The kernel's text as a generator that stops where the template marks the decisions
     (after the schedule and the rule's ``due``, before its ``decide``) to yield
-    ``(STEP_STATE, None)``, and yields ``(STEP_STATE, record)`` instead of returning it."""
+    ``(STEP_STATE, None)``, and yields ``(STEP_STATE, record)`` instead of returning it;
+    compiled with :class:`~sarlink.engine.stepping.StepPipeline`."""
     text, marks = _STEP.subn(lambda m: f"{m[1]}yield {STEP_STATE}, None", text)
     text, ends = _RETURN.subn(f"    yield {STEP_STATE}, RunRecord(", text)
-    if (marks, ends) != (1, 1):
-        raise RuntimeError(f"the kernel template has {marks} stepping marks and {ends} "
-                           f"returns of its record; the stepping form needs one of each")
+    text, defs = _DECORATOR.subn(
+        lambda m: "from sarlink.engine.stepping import StepPipeline\n\n\n"
+                  f"@njit({m[1]}, pipeline_class=StepPipeline)\ndef simulate_kernel(", text)
+    if (marks, ends, defs) != (1, 1, 1):
+        raise RuntimeError(f"the kernel template has {marks} stepping marks, {ends} returns "
+                           f"of its record and {defs} kernels; the stepping form needs one "
+                           f"of each")
     return text
 
 
