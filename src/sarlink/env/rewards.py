@@ -15,7 +15,7 @@ class Rewards:
     The default is the mission: ``notify`` to every drone when the BS is notified, scaled by
     ``1 - t_notify / horizon`` if ``timed`` (an earlier notification is worth more), and
     nothing else. The shaping terms are off by default; they are sampled at the steps at
-    which drones decide, over the time since the previous one.
+    which drones decide, over the time since the previous one (from take-off on).
     """
 
     notify: float = 1.0

@@ -36,6 +36,7 @@ class Stepper:
         self.episode = Episode(self.prepared, seed, run)
         self._detected = False
         self._paid = False
+        self._k = 0  # the step up to which the time-based rewards are paid
         return self.observe()
 
     @property
@@ -57,19 +58,19 @@ class Stepper:
         run to the next decision; the new observation and every drone's reward."""
         ep = self.live
         s = ep.state
-        k0 = s.k
         if not ep.done:
             vx, vy = np.zeros(self.n), np.zeros(self.n)
             for i in np.flatnonzero(s.deciding):
                 vx[i], vy[i] = direction(self.kind, self.directions, actions[i],
                                          s.obs.hx[i], s.obs.hy[i])
             ep.decide(vx, vy)
-        return self.observe(), self._rewards(k0)
+        return self.observe(), self._rewards()
 
-    def _rewards(self, k0: int) -> np.ndarray:
+    def _rewards(self) -> np.ndarray:
         ep, r = self.live, self.rewards
         s = ep.state
-        elapsed = (s.k - k0) * s.params.dt
+        elapsed = (s.k - self._k) * s.params.dt
+        self._k = s.k
         out = np.full(self.n, r.time * elapsed)
         if r.routed:
             bits = np.unpackbits(s.obs.routed.astype("<u8").view(np.uint8), bitorder="little")
