@@ -224,5 +224,22 @@ def test_batched_actions_of_the_wrong_shape_or_range_are_named() -> None:
 
 
 def test_a_route_planner_is_refused() -> None:
-    with pytest.raises(ConfigError, match="'sector' flies routes; sarlink.env steers"):
+    with pytest.raises(ConfigError, match=r"'sector' flies routes; sarlink\.env steers"):
         parallel_env(Mission.build(planner="sector", drones=3))
+
+
+def test_the_learning_example_runs(monkeypatch: pytest.MonkeyPatch,
+                                   capsys: pytest.CaptureFixture[str]) -> None:
+    """examples/learn_policy.py, tiny: one generation, a few short runs."""
+    import runpy
+    import sys
+    from pathlib import Path
+
+    example = Path(__file__).resolve().parents[1] / "examples" / "learn_policy.py"
+    monkeypatch.setattr(sys, "argv", [str(example), "--drones", "3", "--horizon", "120",
+                                      "--runs", "2", "--generations", "1", "--popsize", "2",
+                                      "--test-runs", "2"])
+    runpy.run_path(str(example), run_name="__main__")
+    out = capsys.readouterr().out
+    assert "generation 1: best reward" in out
+    assert all(name in out for name in ("linear policy (CMA-ES)", "covb", "conb"))

@@ -7,6 +7,7 @@ from typing import Any, Literal
 
 import numpy as np
 from gymnasium import spaces
+from numba import njit
 
 from sarlink.config import ConfigError
 
@@ -36,21 +37,49 @@ def allowed(space: spaces.Space[Any]) -> str:
     return "a direction (x, y): an array of 2 numbers, each in [-1, 1], not both 0"
 
 
-def direction(kind: ActionKind, directions: int, action: Any, hx: float,
-              hy: float) -> tuple[float, float]:
-    """The unit direction an (already checked) action asks for; a zero vector keeps the
-    heading ``(hx, hy)``."""
+def directions(kind: ActionKind, count: int, actions: np.ndarray, hx: np.ndarray,
+               hy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The unit directions that (already checked) actions ask for, one per drone: ``(N, 2)``
+    vectors or ``(N,)`` choices among ``count``; a zero vector keeps the heading ``(hx, hy)``."""
     if kind == "discrete":
-        angle = 2.0 * math.pi * int(action) / directions
-        return math.cos(angle), math.sin(angle)
-    x, y = float(action[0]), float(action[1])
-    n2 = x * x + y * y
-    if abs(n2 - 1.0) <= UNIT_TOLERANCE:
-        return x, y
-    if n2 == 0.0:
-        return hx, hy
-    n = math.sqrt(n2)
-    return x / n, y / n
+        angle = 2.0 * np.pi * actions / count
+        return np.cos(angle), np.sin(angle)
+    vx, vy = np.empty(hx.shape[0]), np.empty(hx.shape[0])
+    _unit_directions(np.asarray(actions, dtype=np.float64), hx, hy, vx, vy)
+    return vx, vy
+
+
+@njit(cache=True, error_model="numpy")
+def _unit_directions(a: np.ndarray, hx: np.ndarray, hy: np.ndarray, vx: np.ndarray,
+                     vy: np.ndarray) -> None:
+    for i in range(a.shape[0]):
+        x, y = a[i, 0], a[i, 1]
+        n2 = x * x + y * y
+        if abs(n2 - 1.0) <= UNIT_TOLERANCE:
+            vx[i], vy[i] = x, y
+        elif n2 == 0.0:
+            vx[i], vy[i] = hx[i], hy[i]
+        else:
+            n = math.sqrt(n2)
+            vx[i], vy[i] = x / n, y / n
+
+
+def check_actions(agents: list[str], space: spaces.Space[Any], actions: list[Any]) -> None:
+    """:func:`check_action` of every agent's action (all at once when all are fine)."""
+    try:
+        values = np.asarray(actions) if actions else np.zeros(0)
+    except ValueError:  # ragged: some action has the wrong shape
+        values = np.zeros(0, dtype=object)
+    if isinstance(space, spaces.Box):
+        if (values.shape == (len(actions), 2) and np.issubdtype(values.dtype, np.number)
+                and np.isfinite(values).all() and (np.abs(values) <= 1.0).all()):
+            return
+    elif (isinstance(space, spaces.Discrete) and values.ndim == 1
+          and np.issubdtype(values.dtype, np.integer)
+          and ((values >= 0) & (values < int(space.n))).all()):
+        return
+    for agent, action in zip(agents, actions, strict=True):
+        check_action(agent, space, action)
 
 
 def check_action(agent: str, space: spaces.Space[Any], action: Any) -> None:

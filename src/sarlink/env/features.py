@@ -34,7 +34,8 @@ OWN: tuple[tuple[str, float, float, str], ...] = (
 
 NEIGHBOUR: tuple[tuple[str, float, float, str], ...] = (
     ("present", 0.0, 1.0, "1 if the slot holds a neighbour (else the slot is all zeros)"),
-    ("dx", -math.inf, math.inf, "its position relative to the drone, x / r_c"),
+    ("dx", -math.inf, math.inf, "its position relative to the drone, x / r_c (within "
+                                "+-a / r_c)"),
     ("dy", -math.inf, math.inf, "the same, y / r_c"),
     ("heading_x", -1.0, 1.0, "its unit heading, x"),
     ("heading_y", -1.0, 1.0, "its unit heading, y"),
@@ -53,11 +54,12 @@ def feature_names(neighbours: int) -> list[str]:
     return [f[0] for f in OWN] + [f"n{s}_{f[0]}" for s in range(neighbours) for f in NEIGHBOUR]
 
 
-def observation_space(neighbours: int) -> spaces.Box:
-    """The space of one agent's observation (float32)."""
+def observation_space(neighbours: int, reach: float) -> spaces.Box:
+    """The space of one agent's observation (float32); ``reach = a / r_c`` bounds the
+    neighbours' relative positions (drones stay in the square ``[0, a]²``)."""
     rows = list(OWN) + list(NEIGHBOUR) * neighbours
-    low = np.array([r[1] for r in rows], dtype=np.float32)
-    high = np.array([r[2] for r in rows], dtype=np.float32)
+    low = np.array([max(r[1], -reach) for r in rows], dtype=np.float32)
+    high = np.array([min(r[2], reach) for r in rows], dtype=np.float32)
     return spaces.Box(low, high, dtype=np.float32)
 
 

@@ -17,7 +17,7 @@ from pettingzoo import AECEnv, ParallelEnv
 from pettingzoo.utils import parallel_to_aec, wrappers
 
 from sarlink.config import ConfigError, Mission
-from sarlink.env.actions import ActionKind, allowed, check_action
+from sarlink.env.actions import ActionKind, allowed, check_actions
 from sarlink.env.episode import EngineState, stepping_mission
 from sarlink.env.rewards import Rewards
 from sarlink.env.stepper import Stepper
@@ -103,18 +103,22 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
             raise ConfigError("step() after the episode ended (the BS was notified, or the "
                               "horizon was reached): call reset()")
         state = self.stepper.live.state
-        by_drone: list[Any] = [None] * len(self.possible_agents)
-        for agent, action in actions.items():
-            i = self._agent(agent)
-            check_action(agent, self.action_space(agent), action)
-            by_drone[i] = action
+        for agent in actions:
+            self._agent(agent)
+        given = list(actions)
+        check_actions(given, self.stepper.action_space, [actions[a] for a in given])
         if not self.stepper.live.done:
             for d in np.flatnonzero(state.deciding):
-                if by_drone[d] is None:
-                    agent = self.possible_agents[d]
+                agent = self.possible_agents[d]
+                if agent not in actions:
                     raise ConfigError(f"{agent} decides at this step and has no action; "
                                       f"allowed: {allowed(self.action_space(agent))}")
-        obs, rewards = self.stepper.step(by_drone)
+        n = len(self.possible_agents)
+        chosen = np.zeros((n, 2)) if self.stepper.kind == "continuous" else np.zeros(
+            n, dtype=np.int64)
+        for agent in given:
+            chosen[self._index[agent]] = actions[agent]
+        obs, rewards = self.stepper.step(chosen)
         terminated, truncated = self.stepper.outcome()
         observations = self._observations(obs)
         infos = self._infos()

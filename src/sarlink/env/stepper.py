@@ -3,13 +3,11 @@ actions and rewards as arrays, shared by the PettingZoo form and the batched for
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from sarlink.config import ConfigError
 from sarlink.engine.run import Prepared
-from sarlink.env.actions import ActionKind, action_space, direction
+from sarlink.env.actions import ActionKind, action_space, directions
 from sarlink.env.episode import Episode
 from sarlink.env.features import NEIGHBOUR, OWN, features, observation_space
 from sarlink.env.rewards import Rewards
@@ -26,7 +24,8 @@ class Stepper:
         self.kind, self.directions, self.rewards = actions, directions, rewards
         self.n = prepared.mission.team.drones
         self.action_space = action_space(actions, directions)
-        self.observation_space = observation_space(neighbours)
+        self.observation_space = observation_space(
+            neighbours, prepared.params.size / prepared.mission.channel.rc)
         self.width = len(OWN) + neighbours * len(NEIGHBOUR)
         self.horizon = prepared.params.n_steps * prepared.params.dt
         self.episode: Episode | None = None
@@ -53,16 +52,14 @@ class Stepper:
         features(s.k, s.params, s.obs, s.deciding, out)
         return out.astype(np.float32)
 
-    def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray]:
-        """Apply every deciding drone's (checked) action, ``actions[i]`` for drone ``i``, and
-        run to the next decision; the new observation and every drone's reward."""
+    def step(self, actions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Apply every deciding drone's (checked) action, ``actions[i]`` for drone ``i``
+        (``(N, 2)`` directions or ``(N,)`` choices), and run to the next decision; the new
+        observation and every drone's reward."""
         ep = self.live
-        s = ep.state
         if not ep.done:
-            vx, vy = np.zeros(self.n), np.zeros(self.n)
-            for i in np.flatnonzero(s.deciding):
-                vx[i], vy[i] = direction(self.kind, self.directions, actions[i],
-                                         s.obs.hx[i], s.obs.hy[i])
+            s = ep.state
+            vx, vy = directions(self.kind, self.directions, actions, s.obs.hx, s.obs.hy)
             ep.decide(vx, vy)
         return self.observe(), self._rewards()
 
