@@ -2,8 +2,9 @@
 
 An agent-step is one agent's observation, action and reward in one step of the environment
 (a step of the engine at which drones decide; the engine runs the steps between at its own
-speed). Random continuous actions, the paper's square with r_c = 500 m, 10 drones, runs of
-seed 0 until the notification or the 4000 s horizon. Three ways: PettingZoo's parallel API
+speed). Random continuous actions (NumPy draws: the spaces' ``sample`` would time
+gymnasium), the paper's square with r_c = 500 m, 10 drones, runs of seed 0 until the
+notification or the 4000 s horizon. Three ways: PettingZoo's parallel API
 (dicts of arrays per agent), the AEC form (agents in turn, PettingZoo's wrapper), and the
 batched form (``BatchEnv``, arrays in and out, 16 missions per call). For scale, the same
 runs flown by ``simulate`` (CovB's decisions inside the kernel). Run with
@@ -29,24 +30,26 @@ from sarlink.env import BatchEnv, env, parallel_env
 def parallel(mission: Mission, runs: int) -> tuple[int, float]:
     e = parallel_env(mission)
     e.reset(seed=0)  # compiles (or loads) the kernel
+    rng = np.random.default_rng(0)
     agent_steps, start = 0, time.process_time()
     for run in range(runs):
         e.reset(seed=0, options={"run": run})
         while e.agents:
             agent_steps += len(e.agents)
-            e.step({a: e.action_space(a).sample() for a in e.agents})
+            e.step(dict(zip(e.agents, rng.uniform(-1, 1, (len(e.agents), 2)), strict=True)))
     return agent_steps, time.process_time() - start
 
 
 def aec(mission: Mission, runs: int) -> tuple[int, float]:
     e = env(mission)
+    rng = np.random.default_rng(0)
     agent_steps, start = 0, time.process_time()
     for run in range(runs):
         e.reset(seed=0, options={"run": run})
-        for agent in e.agent_iter():
+        for _agent in e.agent_iter():
             *_, terminated, truncated, _ = e.last()
             agent_steps += 1
-            e.step(None if terminated or truncated else e.action_space(agent).sample())
+            e.step(None if terminated or truncated else rng.uniform(-1, 1, 2))
     return agent_steps, time.process_time() - start
 
 
@@ -85,7 +88,8 @@ def main() -> None:
         f"Environment benchmark: `python benchmarks/bench_env.py --runs {args.runs}` on "
         f"{platform.machine()}, Python {sys.version.split()[0]}, {date.today()}.",
         "",
-        "Random continuous actions, 10 drones, r_c = 500 m, runs 0.. of seed 0 until "
+        "Random continuous actions (NumPy draws), 10 drones, r_c = 500 m, runs 0.. of seed 0 "
+        "until "
         "notification or the 4000 s horizon; one process, CPU time.",
         "",
         "| form | agent-steps | CPU s | k agent-steps/s |",
