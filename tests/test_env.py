@@ -243,3 +243,13 @@ def test_the_learning_example_runs(monkeypatch: pytest.MonkeyPatch,
     out = capsys.readouterr().out
     assert "generation 1: best reward" in out
     assert all(name in out for name in ("linear policy (CMA-ES)", "covb", "conb"))
+
+
+def test_the_stepping_form_needs_the_templates_marks() -> None:
+    """The stepping form is made from the kernel's text: a template without the marker (or
+    the record's return, or the kernel) is refused rather than compiled wrong."""
+    from sarlink.engine.build import stepping_source
+
+    with pytest.raises(RuntimeError, match="0 stepping marks, 0 returns of its record and 0 "
+                                           "kernels"):
+        stepping_source("x = 1\n")

@@ -151,7 +151,8 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
         return self.stepper.live.result()
 
     def render(self) -> None:
-        """No rendering: replay a run with ``sarlink replay`` (its seed and run)."""
+        """No rendering (``render_modes`` is empty): the environment's output is its records
+        (``info["result"]``, :meth:`result`)."""
 
     def close(self) -> None:
         """Nothing to release."""
