@@ -253,3 +253,14 @@ def test_the_stepping_form_needs_the_templates_marks() -> None:
     with pytest.raises(RuntimeError, match="0 stepping marks, 0 returns of its record and 0 "
                                            "kernels"):
         stepping_source("x = 1\n")
+
+
+@pytest.mark.parametrize(("seed", "options", "words"), [
+    (-1, None, "seed must be an integer >= 0, got -1"),
+    (0, {"run": -2}, r"options\['run'\] must be an integer >= 0, got -2"),
+    (0, {"run": 1.5}, r"options\['run'\] must be an integer >= 0, got 1.5"),
+])
+def test_a_bad_seed_or_run_is_named(seed: int, options: dict[str, object] | None,
+                                    words: str) -> None:
+    with pytest.raises(ConfigError, match=words):
+        parallel_env(SMALL).reset(seed=seed, options=options)

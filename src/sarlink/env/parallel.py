@@ -81,14 +81,14 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
         take-off of ``sarlink simulate --seed seed --run run``. Without a seed, the next run of
         the same seed (0 at first); with a seed and no run, run 0."""
         run = (options or {}).get("run")
-        if seed is not None:
-            self.current_seed = int(seed)
         if run is None:
             run = 0 if seed is not None else self.current_run + 1
-        if not isinstance(run, (int, np.integer)) or isinstance(run, bool) or run < 0:
-            raise ConfigError(f"options['run'] must be an integer >= 0, got {run!r}")
-        if self.current_seed < 0:
-            raise ConfigError(f"seed must be an integer >= 0, got {seed!r}")
+        for name, value in (("seed", seed), ("options['run']", run)):
+            if value is not None and (not isinstance(value, (int, np.integer))
+                                      or isinstance(value, bool) or value < 0):
+                raise ConfigError(f"{name} must be an integer >= 0, got {value!r}")
+        if seed is not None:
+            self.current_seed = int(seed)
         self.current_run = int(run)
         obs = self.stepper.start(self.current_seed, self.current_run)
         self.agents = list(self.possible_agents)
