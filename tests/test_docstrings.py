@@ -19,7 +19,7 @@ PUBLIC = ("sarlink", "sarlink.config", "sarlink.simulation", "sarlink.result", "
           "sarlink.planners", "sarlink.mtsp", "sarlink.metrics", "sarlink.storage",
           "sarlink.execution", "sarlink.sizing", "sarlink.paper", "sarlink.playback",
           "sarlink.plots", "sarlink.plantime", "sarlink.engine.hooks", "sarlink.engine.observation",
-          "sarlink.engine.params", "sarlink.engine.build", "sarlink.testing")
+          "sarlink.engine.params", "sarlink.engine.build", "sarlink.testing", "sarlink.env")
 """The modules of the API reference (docs/api/)."""
 
 PACKAGE = griffe.load("sarlink", search_paths=[str(ROOT / "src")], resolve_aliases=True,

@@ -8,10 +8,14 @@ after a digest of every source the kernel depends on (the engine's modules, the 
 modules, the generated text), so an edit to any of them compiles a new kernel, and every
 process of a sweep finds the machine code another one compiled. The hooks are compiled
 inline into the kernel, which is what makes a plug-in as fast as a built-in rule.
+
+The kernel's *stepping form* (:func:`stepping_source`) is the same text made a generator that
+hands the decisions to Python (:mod:`sarlink.env`): the model exists once.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import importlib.util
 import inspect
@@ -33,6 +37,13 @@ from sarlink.engine.rules import none
 
 ENGINE = Path(__file__).resolve().parent
 _BLOCK = re.compile(r"# ---- plug-ins: .*?# ---- end of plug-ins ----\n", re.DOTALL)
+_STEP = re.compile(r"^( *)# ---- stepping form: .*$", re.MULTILINE)
+_RETURN = re.compile(r"^    return RunRecord\(", re.MULTILINE)
+_DECORATOR = re.compile(r"^@njit\((.*)\)\ndef simulate_kernel\(", re.MULTILINE)
+STEP_STATE = "k, obs, ws, deciding, nhx, nhy"
+"""What the stepping form yields, by the kernel's own names: the step, the
+:class:`~sarlink.engine.observation.Observation`, the rule's workspace, who decides, and the new
+directions (the decisions to write), followed by ``None``, or by the ``RunRecord`` at the end."""
 _MEMO: dict[tuple[object, ...], Callable[..., Any]] = {}
 
 
@@ -64,10 +75,31 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel) -> str:
     return "\n".join(lines)
 
 
-def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: bool = True) -> str:
-    """The text of the kernel module for ``rule`` and ``radio``."""
+def stepping_source(text: str) -> str:
+    """The kernel's text as a generator that stops where the template marks the decisions
+    (after the schedule and the rule's ``due``, before its ``decide``) to yield
+    ``(STEP_STATE, None)``, and yields ``(STEP_STATE, record)`` instead of returning it;
+    compiled with :class:`~sarlink.engine.stepping.StepPipeline`."""
+    text, marks = _STEP.subn(lambda m: f"{m[1]}yield {STEP_STATE}, None", text)
+    text, ends = _RETURN.subn(f"    yield {STEP_STATE}, RunRecord(", text)
+    text, defs = _DECORATOR.subn(
+        lambda m: "from sarlink.engine.stepping import StepPipeline\n\n\n"
+                  f"@njit({m[1]}, pipeline_class=StepPipeline)\ndef simulate_kernel(", text)
+    if (marks, ends, defs) != (1, 1, 1):
+        raise RuntimeError(f"the kernel template has {marks} stepping marks, {ends} returns "
+                           f"of its record and {defs} kernels; the stepping form needs one "
+                           f"of each")
+    return text
+
+
+def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: bool = True,
+                  stepping: bool = False) -> str:
+    """The text of the kernel module for ``rule`` and ``radio`` (its stepping form if
+    ``stepping``)."""
     text = _BLOCK.sub(lambda _: plugin_block(rule, radio), Path(template.__file__).read_text(),
                       count=1)
+    if stepping:
+        text = stepping_source(text)
     return text if cache else text.replace("cache=True", "cache=False")
 
 
@@ -126,17 +158,24 @@ def _slug(name: str) -> str:
     return re.sub(r"[^0-9a-zA-Z]+", "_", name).strip("_").lower() or "x"
 
 
-def kernel_for(rule: DistributedRule | None, radio: RadioModel, *,
-               cache: bool = True) -> Callable[..., Any]:
+def kernel_for(rule: DistributedRule | None, radio: RadioModel, *, cache: bool = True,
+               stepping: bool = False) -> Callable[..., Any]:
     """``simulate_kernel`` compiled for ``rule`` and ``radio`` (lazily, on the first call).
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
+    ``stepping=True`` gives the stepping form (:func:`stepping_source`): a generator of the
+    kernel's state at every step at which a drone decides, where the caller writes the
+    decisions; ``rule`` then gives only the schedule (``prepare``, ``due``, ``near``): its
+    ``decide`` is not called.
     """
-    key = (rule, radio_identity(radio), cache)  # the disc and shadowing share a kernel
+    key = (rule, radio_identity(radio), cache, stepping)  # disc and shadowing share a kernel
     if key not in _MEMO:
-        text = kernel_source(rule, radio, cache=cache)
+        if stepping and rule is not None:
+            rule = dataclasses.replace(rule, decide=none.decide)
+        text = kernel_source(rule, radio, cache=cache, stepping=stepping)
         digest = kernel_digest(rule, radio, text)
-        name = f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}_{digest}"
+        form = "_steps" if stepping else ""
+        name = f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{form}_{digest}"
         if cache:
             path = cache_root() / "kernels" / f"{name}.py"
             _write_once(path, text)

@@ -12,6 +12,8 @@ This file is a template: :mod:`sarlink.engine.build` compiles it once per pair o
 rule and radio model (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
 below, into a module of its own in the cache folder, named after the digest of every source it
 depends on (so an edit anywhere recompiles, and every process shares the compiled code).
+The same text also gives the kernel's stepping form (``build.kernel_for(..., stepping=True)``,
+:mod:`sarlink.env`): a generator that yields at the marked line of the decide phase.
 """
 
 from __future__ import annotations
@@ -158,6 +160,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if RULE_DUE:
             any_deciding = rule_due(k, p, obs, ws, deciding)
         if any_deciding:
+            # ---- stepping form: the decisions come from outside here (sarlink.env) ----
             rule_decide(k, p, obs, ws, deciding, nhx, nhy)
         if polygon:  # the boundary rule on the polygon, and the ways round its holes
             area.polygon_rules(k, homing, p, px, py, nhx, nhy, mode, on_route, last_change,

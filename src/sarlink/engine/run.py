@@ -166,14 +166,21 @@ class Prepared:
             traj = Trajectory(t=np.arange(tr.mode.shape[0]) * self.params.dt,
                               positions=tr.positions, headings=tr.headings, knows=tr.knows,
                               bs_route=tr.bs_route, mode=tr.mode, links=unpack_links(tr.links))
-        return RunResult(
-            seed=seed, run=run, target=(float(scenario.target[0]), float(scenario.target[1])),
-            t_detect=None if rec.t_detect < 0 else rec.t_detect,
-            t_notify=None if rec.t_notify < 0 else rec.t_notify,
-            immediate=rec.immediate, detector=None if rec.detector < 0 else rec.detector,
-            checkpoints=rec.checkpoints, reach_cum=rec.reach_cum, connected_cum=rec.conn_cum,
-            trajectory=traj,
-        )
+        return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
+                          traj)
+
+
+def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
+               trajectory: Trajectory | None = None) -> RunResult:
+    """The kernel's record of run ``run`` (seed ``seed``) as a :class:`~sarlink.RunResult`."""
+    return RunResult(
+        seed=seed, run=run, target=target,
+        t_detect=None if rec.t_detect < 0 else rec.t_detect,
+        t_notify=None if rec.t_notify < 0 else rec.t_notify,
+        immediate=rec.immediate, detector=None if rec.detector < 0 else rec.detector,
+        checkpoints=rec.checkpoints, reach_cum=rec.reach_cum, connected_cum=rec.conn_cum,
+        trajectory=trajectory,
+    )
 
 
 def unpack_links(bits: np.ndarray) -> np.ndarray:
