@@ -9,8 +9,8 @@ __all__ = ["CONB", "CONCOV", "COVB"]
 
 _CONB_READINGS = ("conb_check", "contacts", "isolated")
 
-COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True)
-"""CovB's repulsion (Eqs. 6-8)."""
+COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True, range_free=True)
+"""CovB's repulsion (Eqs. 6-8): it reads the pairs within the sensing range, never a link."""
 CONB = DistributedRule("conb", conb.decide, prepare=conb.prepare, due=conb.due,
                        readings=_CONB_READINGS)
 """ConB's attachment to the BS (Eqs. 9-11)."""
