@@ -81,21 +81,20 @@ def _effective(dd: float, fade: float) -> float:
 @njit(cache=True, inline="always", error_model="numpy")
 def _keys(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray, shadowed: bool,
           key: np.ndarray) -> None:
-    """Every link's key among the ``m`` nodes, computed as the link pass computes ``d²``."""
+    """Every link's key among the ``m`` nodes, computed as the link pass computes ``d²``
+    (``dx² + dy² + dz²`` from node ``a`` to node ``b``, the same bits either way)."""
     m = key.shape[0]
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
-        for b in range(m):
+        for b in range(a + 1, m):
             dx = xa - px[b]
             dy = ya - py[b]
             dz = za - pz[b]
-            key[a, b] = dx * dx + dy * dy + dz * dz
-    if shadowed:
-        for a in range(m):
-            for b in range(a + 1, m):
-                v = _effective(key[a, b], fade[a, b])
-                key[a, b] = v
-                key[b, a] = v
+            v = dx * dx + dy * dy + dz * dz
+            if shadowed:
+                v = _effective(v, fade[a, b])
+            key[a, b] = v
+            key[b, a] = v
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -105,39 +104,44 @@ def _tree(key: np.ndarray, n: int, order: np.ndarray, parent: np.ndarray, up_key
 
     ``order``: the nodes in the order they joined (BS first), ``parent`` and ``up_key`` (the
     key of the edge to it) per node, ``routed``: the largest key on each node's path to the
-    BS, which on a minimum spanning tree is the smallest over all paths.
+    BS, which on a minimum spanning tree is the smallest over all paths. A joined node's
+    ``best`` is infinite, so that the choice of the next node is a plain minimum.
     """
-    for v in range(n + 1):
+    for v in range(n):
         best[v] = key[n, v]
         parent[v] = n
         joined[v] = False
-    joined[n] = True
     routed[n] = 0.0
     order[0] = n
     for j in range(1, n + 1):
-        u = -1
+        u = 0
         low = _INF
-        for v in range(n + 1):
-            if not joined[v] and (u < 0 or best[v] < low):
-                low = best[v]
+        for v in range(n):
+            b = best[v]
+            if b < low:
+                low = b
                 u = v
         order[j] = u
         joined[u] = True
+        best[u] = _INF
         up_key[u] = low
         routed[u] = max(routed[parent[u]], low)
-        for v in range(n + 1):
+        for v in range(n):
             k = key[u, v]
-            if not joined[v] and k < best[v]:
-                best[v] = k
-                parent[v] = u
+            better = k < best[v] and not joined[v]
+            best[v] = k if better else best[v]
+            parent[v] = u if better else parent[v]
 
 
 @njit(cache=True, error_model="numpy")
 def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
              end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-             cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
+             cp_steps: np.ndarray, r2s: np.ndarray, stairs: bool) -> Critical:
     """The critical ranges of steps ``0 .. end`` of a range-free flight, and its records at
     every squared range of ``r2s``, summed step by step in the kernel's order.
+
+    Without ``stairs`` the knowledge keys are followed only until every range of ``r2s`` is
+    notified, and the staircase is cut there.
 
     ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them; a
     team that settled has fewer rows, and its last holds for the later steps. ``rng_shadow``
@@ -157,7 +161,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
     order = np.empty(n + 1, dtype=np.int64)
     parent = np.empty(n + 1, dtype=np.int64)
     up_key, best, routed = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
-    joined = np.zeros(n + 1, dtype=np.bool_)
+    joined = np.zeros(n, dtype=np.bool_)
     up, knows_key = np.empty(n + 1), np.full(n + 1, _INF)
     in_range = np.zeros(n, dtype=np.bool_)
     pass_start = np.zeros(n, dtype=np.int64)
@@ -175,6 +179,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
     acc_reach, acc_conn = np.zeros(nr), np.zeros(nr)
     ci = np.zeros(nr, dtype=np.int64)
     going = np.ones(nr, dtype=np.bool_)  # ranges whose run has not stopped
+    widest = r2s.max() if nr > 0 else _INF
     for k in range(end + 1):
         for r in range(nr):
             if going[r]:
@@ -195,7 +200,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             reach_key = key[n + 1, n]
             for i in range(n):
                 reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
-        if det_step >= 0:
+        if det_step >= 0 and (stairs or lowest_bs > widest):
             # knowledge: sources are the drones that sensed (key 0) or knew (their key); a
             # key at or above the BS's running minimum no longer matters (notified there)
             for i in range(n):

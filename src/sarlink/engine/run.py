@@ -180,11 +180,13 @@ class Prepared:
         return (get_radio(self.mission.radio).range_free and self.params.on_detect != REPORT
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
-    def critical(self, seed: int, run: int, rcs: Sequence[float], *,
+    def critical(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = True,
                  scenario: Scenario | None = None) -> tuple[Scenario, RunRecord, Critical]:
         """One traced flight of a range-free mission at the smallest range of ``rcs`` (the
         latest to stop at its notification), its critical ranges and its records at each
-        range of ``rcs``; with the run's initial conditions and the flight's own record."""
+        range of ``rcs``; with the run's initial conditions and the flight's own record.
+        Without ``staircase``, the staircase stops where every range of ``rcs`` is
+        notified."""
         if not self.range_free:
             raise ValueError(f"{self.mission.team.planner} with these settings flies "
                              "differently at each range: fly each range")
@@ -198,7 +200,7 @@ class Prepared:
         crit = critical(p, p._replace(rc=1.0), float(scenario.target[0]),
                         float(scenario.target[1]), positions,
                         positions.shape[0] - 1 if stopped else p.n_steps, fresh.shadow,
-                        fresh.look, self.cp_steps, np.array([rc * rc for rc in rcs]))
+                        fresh.look, self.cp_steps, np.array([rc * rc for rc in rcs]), staircase)
         return scenario, rec, crit
 
     def run_ranges(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = False,
@@ -208,7 +210,8 @@ class Prepared:
         ``staircase``, each also with its notification staircase
         (:attr:`sarlink.RunResult.notify_times`)."""
         p = self.params
-        scenario, rec, crit = self.critical(seed, run, rcs, scenario=scenario)
+        scenario, rec, crit = self.critical(seed, run, rcs, staircase=staircase,
+                                            scenario=scenario)
         target = (float(scenario.target[0]), float(scenario.target[1]))
         out = []
         for j, k in enumerate(crit.notified.tolist()):
