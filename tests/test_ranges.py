@@ -51,9 +51,14 @@ def same_outcome(a: RunResult, b: RunResult) -> None:
 
 
 def check(mission: Mission, run: int, rcs: list[float]) -> list[RunResult]:
+    """Read with and without the staircase (which follows the knowledge further)."""
     via = prepare(mission).run_ranges(3, run, rcs, staircase=True)
-    for rc, got in zip(rcs, via, strict=True):
-        same_outcome(got, prepare(mission.replace(rc=rc)).run(3, run))
+    bare = prepare(mission).run_ranges(3, run, rcs)
+    for rc, got, plain in zip(rcs, via, bare, strict=True):
+        direct = prepare(mission.replace(rc=rc)).run(3, run)
+        same_outcome(got, direct)
+        same_outcome(plain, direct)
+        assert plain.notify_times is None
     return via
 
 

@@ -179,7 +179,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
     acc_reach, acc_conn = np.zeros(nr), np.zeros(nr)
     ci = np.zeros(nr, dtype=np.int64)
     going = np.ones(nr, dtype=np.bool_)  # ranges whose run has not stopped
-    widest = r2s.max() if nr > 0 else _INF
+    narrowest = r2s.min() if nr > 0 else -_INF
     for k in range(end + 1):
         for r in range(nr):
             if going[r]:
@@ -200,7 +200,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             reach_key = key[n + 1, n]
             for i in range(n):
                 reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
-        if det_step >= 0 and (stairs or lowest_bs > widest):
+        if det_step >= 0 and (stairs or lowest_bs > narrowest):
             # knowledge: sources are the drones that sensed (key 0) or knew (their key); a
             # key at or above the BS's running minimum no longer matters (notified there)
             for i in range(n):
