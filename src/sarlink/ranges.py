@@ -20,14 +20,55 @@ import numpy as np
 import pandas as pd
 
 from sarlink.config import ConfigError, param_groups
+from sarlink.metrics import wilson
 
-__all__ = ["at_range", "notify_time"]
+__all__ = ["at_range", "needed_ranges", "notify_time", "range_curve"]
 
 
 def notify_time(times: np.ndarray, rc2: np.ndarray, rc: float) -> float:
     """When the BS is notified at range ``rc`` by a run's staircase, s (NaN: never)."""
     below = np.flatnonzero(np.asarray(rc2) <= rc * rc)
     return float(np.asarray(times)[below[0]]) if below.size else math.nan
+
+
+def needed_ranges(runs: pd.DataFrame, td: float) -> np.ndarray:
+    """Each run's needed range, m: the smallest at which its BS is notified by ``td`` (``inf``:
+    at none, or a run without a staircase), from its staircase. A run notified at some range
+    is notified at every larger one, so ``P_s(td, r_c)`` is the share of runs whose needed
+    range is at most ``r_c``."""
+    out = np.full(len(runs), math.inf)
+    if "notify_times" not in runs:
+        return out
+    for i, (times, keys) in enumerate(zip(runs["notify_times"], runs["notify_rc2"],
+                                          strict=True)):
+        if times is None or (isinstance(times, float) and math.isnan(times)):
+            continue
+        times, keys = np.asarray(times, dtype=float), np.asarray(keys, dtype=float)
+        by = keys[times <= td]
+        if by.size:
+            out[i] = math.sqrt(float(by.min()))
+    return out
+
+
+def range_curve(runs: pd.DataFrame, rcs: np.ndarray, td: float, by: list[str]) -> pd.DataFrame:
+    """``P_s(td)`` against the communication range: for every group of ``by`` whose runs all
+    carry a staircase, a row per range of ``rcs`` with ``P_s`` and its 95 % Wilson interval
+    (columns ``*by, td, rc, runs, P_s, P_s_lo, P_s_hi``). Groups flown per range are left out."""
+    has = (runs["notify_times"].notna() if "notify_times" in runs
+           else pd.Series(False, index=runs.index))
+    rows = []
+    for key, group in runs.groupby(by, sort=False):
+        if not has[group.index].all():
+            continue
+        needed = np.sort(needed_ranges(group, td))
+        hits = np.searchsorted(needed, np.asarray(rcs, dtype=float), side="right")
+        lo, hi = wilson(hits, len(needed))
+        values = dict(zip(by, key if isinstance(key, tuple) else (key,), strict=True))
+        rows.append(pd.DataFrame({**values, "td": td, "rc": rcs, "runs": len(needed),
+                                  "P_s": hits / len(needed), "P_s_lo": lo, "P_s_hi": hi}))
+    if not rows:
+        return pd.DataFrame(columns=[*by, "td", "rc", "runs", "P_s", "P_s_lo", "P_s_hi"])
+    return pd.concat(rows, ignore_index=True)
 
 
 def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
