@@ -137,7 +137,12 @@ def _range_free_request(flags: MissionFlags) -> bool:
     if flags.value("--rc") is not None:
         return False
     config = flags.value("--config")
-    return config is None or "rc" not in read_toml(config).get("channel", {})
+    if config is None:
+        return True
+    try:
+        return "rc" not in read_toml(config).get("channel", {})
+    except (ConfigError, OSError):  # the mission's own reading names the flag and the error
+        return False
 
 
 def _team_sizes(text: str | None, largest: int) -> tuple[int, ...]:
@@ -272,7 +277,7 @@ def _design_range(flags: MissionFlags, td: float, ps: float, planner: list[str] 
     from sarlink.sizing import DesignRequest
     from sarlink.sizing.ranges import range_design, to_json
 
-    if option:
+    if option and _options(option):
         raise ConfigError("--option applies with --rc only: without it the design finds the "
                           "range of the paper's drones (on_detect = continue)")
     if range_runs < 10:
