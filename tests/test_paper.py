@@ -54,19 +54,19 @@ def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     out = quick.out
-    for n in range(1, 10):  # the paper's seven, Figs. 8 and 9 beyond the paper
+    for n in range(1, 11):  # the paper's seven, Figs. 8-10 beyond the paper
         for ext in ("png", "svg"):
             path = out / "figures" / f"fig{n}.{ext}"
             assert path.stat().st_size > 10_000, path
-    assert sorted(quick.figures) == list(range(1, 10))
+    assert sorted(quick.figures) == list(range(1, 11))
     assert quick.report_md == out / "report.md"
     page = quick.report_html.read_text()
-    assert page.count("data:image/png;base64,") == 9
+    assert page.count("data:image/png;base64,") == 10
     assert "Beyond the paper: drones that go and tell" in page
     assert "Beyond the paper: the search patterns SAR teams fly" in page
     assert not re.search(r"""(src|href)=["']?(https?:|//|figures/)""", page)  # self-contained
     for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve",
-                 "others"):
+                 "others", "range_curve"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
 
@@ -94,6 +94,20 @@ def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
     assert (stored["planner"] == recomputed["planner"]).all()
     pd.testing.assert_frame_equal(pd.read_parquet(quick.out / "tables" / "main.parquet"),
                                   recomputed)
+
+
+def test_the_range_figure_agrees_with_the_flown_ranges(quick: ReproductionResult) -> None:
+    """Fig. 10's P_s at a continuous range, read from one flight per run, equals the main
+    table's at the three ranges flown; the teams flown per range are not in it."""
+    curve = pd.read_csv(quick.out / "tables" / "range_curve.csv")
+    main = pd.read_csv(quick.out / "tables" / "main.csv")
+    both = curve.merge(main, on=["planner", "drones", "rc", "td"], suffixes=("", "_main"))
+    assert len(both) == len(curve[curve["rc"].isin(RANGES)]) > 0
+    np.testing.assert_array_equal(both["P_s"], both["P_s_main"])
+    assert set(curve["planner"]) == {"mtsp", "covb", "mtsp-conb"}
+    assert set(curve[curve["planner"] == "mtsp-conb"]["drones"]) == {4}  # N_m <= N_r = 6
+    assert curve.groupby(["planner", "drones", "td"])["P_s"].apply(
+        lambda p: bool((np.diff(p.to_numpy()) >= 0).all())).all()  # more range, no less P_s
 
 
 def _report_table(md: str, heading: str) -> list[list[str]]:

@@ -36,10 +36,12 @@ from sarlink.simulation import prepare, simulate
 
 if TYPE_CHECKING:
     from sarlink.execution import sweep
+    from sarlink.ranges import at_range
     from sarlink.sizing import design
     from sarlink.storage import load
 
-_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage", "design": "sarlink.sizing"}
+_LAZY = {"sweep": "sarlink.execution", "load": "sarlink.storage", "design": "sarlink.sizing",
+         "at_range": "sarlink.ranges"}
 """Names whose modules import pandas and pyarrow (most of a second): loaded on first use, so
 that a single simulation starts without them."""
 
@@ -72,6 +74,7 @@ __all__ = [
     "Team",
     "Timing",
     "Trajectory",
+    "at_range",
     "design",
     "get_planner",
     "load",

@@ -5,6 +5,15 @@ process pool or on a Dask cluster, and writes each finished task as one Parquet 
 (:mod:`sarlink.storage`); a sweep started again skips what is stored. :func:`sweep_all` does
 the same for several experiments on one set of workers, which :func:`start_workers` can keep
 across calls (``sarlink design`` sweeps its candidates in rounds).
+
+The points of a grid over ``rc`` whose team may fly the same at every range (a route
+planner, a rule declared ``range_free`` such as CovB, drones that do not report: see
+:attr:`sarlink.engine.run.Prepared.range_free`) share their flights: the tasks of such points
+with the same runs are one job, which flies each run once and reads it at every range
+(:mod:`sarlink.engine.ranges`), with the same rows as one flight per range. A job of one
+range flies as before, unless the experiment asks for the notification staircase
+(``Experiment.staircase``): reading the critical ranges costs most of a flight, which only a
+job of several ranges earns back.
 """
 
 from __future__ import annotations
@@ -21,6 +30,7 @@ from contextlib import ExitStack, closing, contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple, Protocol
 
+import numpy as np
 import pandas as pd
 import pyarrow as pa
 from rich.progress import (
@@ -37,6 +47,7 @@ from rich.text import Text
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
+from sarlink.engine import Prepared
 from sarlink.engine.build import radio_identity
 from sarlink.engine.radios import get_radio
 from sarlink.planners import MTSP_PLANNERS, get_planner
@@ -59,20 +70,25 @@ class _Task(NamedTuple):
     store: storage.Store
     point: storage.Point
     runs: range
+    staircase: bool = False
 
 
-_Results = Generator[tuple[_Task, pa.Table], None, None]
-"""Finished tasks and their tables, in order of completion."""
+_Job = tuple[_Task, ...]
+"""Tasks run together: one, or the points of a team that may fly the same at every range and
+differ only in ``rc`` (the same folder and runs), flown once."""
+
+_Results = Generator[tuple[_Job, list[pa.Table]], None, None]
+"""Finished jobs and their tables (one per task), in order of completion."""
 
 
-def _plan(store: storage.Store, runs: int, chunk: int) -> list[_Task]:
+def _plan(store: storage.Store, runs: int, chunk: int, staircase: bool = False) -> list[_Task]:
     """Tasks for every run not stored yet, first chunks of all points first.
 
     Planning from the stored run indices rather than from a fixed cut makes a resume with
     another chunk size neither redo nor double any run; the order lets a summary of a sweep
     half done cover every grid point.
     """
-    tasks = [_Task(store, point, range(start, min(start + chunk, gap.stop)))
+    tasks = [_Task(store, point, range(start, min(start + chunk, gap.stop)), staircase)
              for point in store.points
              for gap in store.missing(point, runs)
              for start in range(gap.start, gap.stop, chunk)]
@@ -80,22 +96,72 @@ def _plan(store: storage.Store, runs: int, chunk: int) -> list[_Task]:
     return sorted(tasks, key=lambda t: (t.runs.start, order[t.point.hash]))
 
 
-def _run_chunk(mission_json: str, seed: int, start: int, stop: int,
-               plugins: Plugins) -> pa.Table:
-    """A task: runs ``start .. stop-1`` of one mission, as a table (in a worker process, with
-    the plug-ins its caller registered in code)."""
+def _may_share(mission: Mission) -> bool:
+    """Whether ``mission``'s team may fly the same at every range, from its planner and radio
+    alone (the worker checks the routes: :func:`_one_flight`)."""
+    rule = get_planner(mission.team.planner).rule
+    return (get_radio(mission.radio).range_free and mission.team.on_detect != "report"
+            and (rule is None or rule.range_free or get_planner(mission.team.planner).kind
+                 == "hybrid"))
+
+
+def _jobs(tasks: Sequence[_Task]) -> list[_Job]:
+    """The tasks as jobs: those of points that may share their flights and differ only in
+    ``rc`` together, in the order of their first task."""
+    groups: dict[tuple[Any, ...], list[_Task]] = {}
+    jobs: list[_Job | None] = []
+    for task in tasks:
+        mission = task.point.mission
+        if not _may_share(mission):
+            jobs.append((task,))
+            continue
+        key = (id(task.store), task.runs.start, task.runs.stop,
+               mission.replace(rc=1.0).model_dump_json())
+        if key not in groups:
+            groups[key] = []
+            jobs.append(None)  # a placeholder, keeping the order of the tasks
+        groups[key].append(task)
+    grouped = iter(groups.values())
+    return [job if job is not None else tuple(next(grouped)) for job in jobs]
+
+
+def _one_flight(prepared: Sequence[Prepared]) -> bool:
+    """Whether the missions of ``prepared`` (one team at several ranges) are one flight:
+    each range-free, with the same routes (a route function may read ``rc``)."""
+    first = prepared[0]
+    return all(p.range_free and np.array_equal(p.waypoints, first.waypoints)
+               and np.array_equal(p.wp_start, first.wp_start)
+               and np.array_equal(p.radio_params, first.radio_params) for p in prepared)
+
+
+def _run_chunk(mission_jsons: list[str], seed: int, start: int, stop: int, staircase: bool,
+               plugins: Plugins) -> list[pa.Table]:
+    """A job: runs ``start .. stop-1`` of each mission, as a table each (in a worker process,
+    with the plug-ins its caller registered in code).
+
+    Several missions of one range-free team at several ranges are flown once per run and read
+    at each range; so is one with ``staircase``, whose rows then carry it.
+    """
     adopt_plugins(plugins)
-    mission = Mission.model_validate_json(mission_json)
-    prepared = prepare(mission)
-    return storage.run_table(mission, seed, [prepared.run(seed, k).row()
-                                             for k in range(start, stop)])
+    missions = [Mission.model_validate_json(text) for text in mission_jsons]
+    prepared = [prepare(mission) for mission in missions]
+    if (len(missions) > 1 or staircase) and _one_flight(prepared):
+        rcs = [m.channel.rc for m in missions]
+        rows: list[list[dict[str, Any]]] = [[] for _ in missions]
+        for k in range(start, stop):
+            results = prepared[0].run_ranges(seed, k, rcs, staircase=staircase)
+            for at_rc, result in zip(rows, results, strict=True):
+                at_rc.append(result.row())
+        return [storage.run_table(m, seed, r) for m, r in zip(missions, rows, strict=True)]
+    return [storage.run_table(m, seed, [p.run(seed, k).row() for k in range(start, stop)])
+            for m, p in zip(missions, prepared, strict=True)]
 
 
-def _calls(tasks: Sequence[_Task]) -> list[tuple[str, int, int, int, Plugins]]:
-    texts = {t.point.hash: t.point.mission.model_dump_json() for t in tasks}
+def _calls(jobs: Sequence[_Job]) -> list[tuple[list[str], int, int, int, bool, Plugins]]:
+    texts = {t.point.hash: t.point.mission.model_dump_json() for job in jobs for t in job}
     plugins = plugins_in_code()
-    return [(texts[t.point.hash], t.store.seed, t.runs.start, t.runs.stop, plugins)
-            for t in tasks]
+    return [([texts[t.point.hash] for t in job], job[0].store.seed, job[0].runs.start,
+             job[0].runs.stop, job[0].staircase, plugins) for job in jobs]
 
 
 def _exit_with(parent: int) -> None:
@@ -165,8 +231,8 @@ class Workers(Protocol):
     """Worker processes started once (:func:`start_workers`) that run the tasks of any
     number of sweeps, so that a caller sweeping in rounds starts them only once."""
 
-    def results(self, tasks: Sequence[_Task]) -> _Results:
-        """Run ``tasks``; yield each with its table as it finishes."""
+    def results(self, jobs: Sequence[_Job]) -> _Results:
+        """Run ``jobs``; yield each with its tables as it finishes."""
         ...
 
 
@@ -185,9 +251,9 @@ class _Local:
             for future in [self.pool.submit(_compile, part, plugins) for part in parts]:
                 future.result()
 
-    def results(self, tasks: Sequence[_Task]) -> _Results:
-        futures = {self.pool.submit(_run_chunk, *call): task
-                   for call, task in zip(_calls(tasks), tasks, strict=True)}
+    def results(self, jobs: Sequence[_Job]) -> _Results:
+        futures = {self.pool.submit(_run_chunk, *call): job
+                   for call, job in zip(_calls(jobs), jobs, strict=True)}
         try:
             for future in as_completed(futures):
                 yield futures[future], future.result()
@@ -202,11 +268,11 @@ class _Dask:
     def __init__(self, client: Any) -> None:
         self.client = client
 
-    def results(self, tasks: Sequence[_Task]) -> _Results:
+    def results(self, jobs: Sequence[_Job]) -> _Results:
         from distributed import as_completed as dask_completed
 
-        futures = {self.client.submit(_run_chunk, *call, pure=False): task
-                   for call, task in zip(_calls(tasks), tasks, strict=True)}
+        futures = {self.client.submit(_run_chunk, *call, pure=False): job
+                   for call, job in zip(_calls(jobs), jobs, strict=True)}
         try:
             for future in dask_completed(futures):
                 yield futures[future], future.result()
@@ -336,10 +402,12 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
         stores = [stack.enter_context(storage.open_store(out_dir, experiment))
                   for experiment, out_dir in jobs]
         tasks = [task for store, (experiment, _) in zip(stores, jobs, strict=True)
-                 for task in _plan(store, experiment.runs, experiment.chunk)]
+                 for task in _plan(store, experiment.runs, experiment.chunk,
+                                   experiment.staircase)]
         if tasks:
+            batches = _jobs(tasks)
             if pool is None:
-                local = min(workers or os.cpu_count() or 1, len(tasks))
+                local = min(workers or os.cpu_count() or 1, len(batches))
                 pool = stack.enter_context(start_workers(
                     None if scheduler is not None else local, scheduler=scheduler,
                     dask_local=dask_local))
@@ -349,13 +417,14 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
             if isinstance(pool, _Local):
                 pool.compile(tasks)
             with _progress_bar(progress and sys.stdout.isatty()) as bar, \
-                    closing(pool.results(tasks)) as results:
-                job = bar.add_task(name, total=total,
-                                   completed=total - sum(len(t.runs) for t in tasks))
-                for task, table in results:
-                    task.store.write(task.point, task.runs, table)
-                    bar.advance(job, len(task.runs))
-                    if on_runs is not None:
-                        on_runs(len(task.runs))
+                    closing(pool.results(batches)) as results:
+                shown = bar.add_task(name, total=total,
+                                     completed=total - sum(len(t.runs) for t in tasks))
+                for job, tables in results:
+                    for task, table in zip(job, tables, strict=True):
+                        task.store.write(task.point, task.runs, table)
+                        bar.advance(shown, len(task.runs))
+                        if on_runs is not None:
+                            on_runs(len(task.runs))
         return [store.frame(experiment.runs)
                 for store, (experiment, _) in zip(stores, jobs, strict=True)]

@@ -50,6 +50,12 @@ class RunResult:
     reach_cum: np.ndarray
     connected_cum: np.ndarray
     trajectory: Trajectory | None = None
+    notify_times: np.ndarray | None = None
+    """A range-free run's notification staircase (:mod:`sarlink.engine.ranges`), when asked
+    for: at any range ``r_c`` the BS is notified at ``notify_times[j]`` for the first ``j``
+    with ``notify_rc2[j] <= r_c * r_c`` (never, if there is none); None otherwise."""
+    notify_rc2: np.ndarray | None = None
+    """The squared ranges of that staircase, m², strictly falling."""
 
     @property
     def horizon(self) -> float:
@@ -80,7 +86,8 @@ class RunResult:
         return float(np.interp(td, self.checkpoints, self.connected_cum)) / td
 
     def row(self) -> dict[str, Any]:
-        """A flat record for tables: missing event times are NaN."""
+        """A flat record for tables: missing event times are NaN; a staircase as two more
+        columns."""
         return {
             "seed": self.seed,
             "run": self.run,
@@ -95,4 +102,7 @@ class RunResult:
             "checkpoints": self.checkpoints.tolist(),
             "reach_cum": self.reach_cum.tolist(),
             "connected_cum": self.connected_cum.tolist(),
+            **({} if self.notify_times is None or self.notify_rc2 is None else {
+                "notify_times": self.notify_times.tolist(),
+                "notify_rc2": self.notify_rc2.tolist()}),
         }

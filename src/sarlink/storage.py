@@ -275,9 +275,11 @@ def _locked(root: Path) -> Iterator[None]:
         yield
 
 
-def _identity(seed: int, points: Sequence[Point]) -> str:
-    """What the rows depend on: the seed and each grid point's mission, in grid order."""
-    data = json.dumps({"seed": seed, "points": [p.hash for p in points]})
+def _identity(seed: int, points: Sequence[Point], staircase: bool = False) -> str:
+    """What the rows depend on: the seed and each grid point's mission, in grid order, and
+    whether they carry the staircase (named only when they do, as folders before it)."""
+    data = json.dumps({"seed": seed, "points": [p.hash for p in points],
+                       **({"staircase": True} if staircase else {})})
     return hashlib.sha256(data.encode()).hexdigest()[:16]
 
 
@@ -298,7 +300,7 @@ def open_store(out_dir: str | Path, experiment: Experiment) -> Iterator[Store]:
               for params, mission in experiment.points()]
     manifest = {
         "format": FORMAT,
-        "identity": _identity(experiment.seed, points),
+        "identity": _identity(experiment.seed, points, experiment.staircase),
         "sarlink": version("sarlink"),
         "experiment": experiment.model_dump(mode="json"),
         "points": [{"hash": p.hash, "params": p.params} for p in points],

@@ -16,7 +16,8 @@ from sarlink.config import ConfigError
 from sarlink.config.region import area_label
 
 if TYPE_CHECKING:
-    from sarlink.sizing import DesignAnswer, Estimate, PlannerAnswer
+    from sarlink.sizing import DesignAnswer, DesignRequest, Estimate, PlannerAnswer
+    from sarlink.sizing.ranges import PlannerRanges
 
 _OPTION_NAMES = {"planners": "--planner", "options": "--option"}
 
@@ -129,6 +130,61 @@ def _print_tuning(planner: PlannerAnswer) -> None:
     console.print(table)
 
 
+def _range_free_request(flags: MissionFlags) -> bool:
+    """Whether the range is left to the design: no ``--rc``, and no ``rc`` in ``--config``."""
+    from sarlink.config.base import read_toml
+
+    if flags.value("--rc") is not None:
+        return False
+    config = flags.value("--config")
+    if config is None:
+        return True
+    try:
+        return "rc" not in read_toml(config).get("channel", {})
+    except (ConfigError, OSError):  # the mission's own reading names the flag and the error
+        return False
+
+
+def _team_sizes(text: str | None, largest: int) -> tuple[int, ...]:
+    if text is None:
+        return tuple(range(1, largest + 1))
+    try:
+        sizes = tuple(sorted({int(v) for v in text.split(",") if v.strip()}))
+    except ValueError:
+        raise ConfigError(f"--sizes: expected team sizes like 4,10,22, got {text!r}") from None
+    if not sizes or sizes[0] < 1 or sizes[-1] > largest:
+        raise ConfigError(f"--sizes: team sizes must be between 1 and --max-drones "
+                          f"({largest}), got {text!r}")
+    return sizes
+
+
+def _metres(value: float | None) -> str:
+    return "–" if value is None else f"{value:,.0f} m"
+
+
+def _print_ranges(request: DesignRequest, answers: list[PlannerRanges], runs: int) -> None:
+    m = request.mission
+    for a in answers:
+        if not a.needs:
+            console.print(f"[bold]{a.label}[/]: {a.reason}", highlight=False)
+            continue
+        table = Table(title=f"{a.label}: smallest r_c with P_s({request.td:g} s) >= "
+                            f"{request.ps:g} at {request.confidence:.0%} confidence "
+                            f"({area_label(m.region, m.area.size)}, {runs:,} runs per size)",
+                      title_justify="left")
+        for name in ("drones", "r_c needed", "estimate", "fails below",
+                     "P_s at any range", "front"):
+            table.add_column(name, justify="right")
+        for need in a.needs:
+            table.add_row(str(need.drones),
+                          _metres(need.range) if need.range is not None else
+                          "[dim]no range[/]", _metres(need.estimate), _metres(need.below),
+                          f"{need.found:.3f}", "*" if need.front else "")
+        console.print(table)
+        if a.reason:
+            console.print(f"  ({a.reason}: give --rc)", highlight=False)
+
+
 @mission_flags("design")
 def design(
     flags: MissionFlags,
@@ -161,12 +217,22 @@ def design(
     json: Annotated[bool, typer.Option("--json", help="print the answer as JSON")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the answer here")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bar")] = False,
+    sizes: Annotated[str | None, typer.Option(
+        help="without --rc: team sizes to find the range of, e.g. 4,10,22; "
+             "default: 1 to --max-drones")] = None,
+    range_runs: Annotated[int, typer.Option(
+        help="without --rc: runs per team size (one flight gives every range)")] = 1000,
 ) -> None:
-    """Find the smallest team, planner and setting whose P_s(t_d) meets a requirement."""
+    """Find the smallest team, planner and setting whose P_s(t_d) meets a requirement;
+    without --rc, the smallest range each team size needs."""
     from sarlink.sizing import DesignRequest
     from sarlink.sizing import design as run_design  # pandas: only for this command
 
     with user_errors():
+        if _range_free_request(flags):
+            _design_range(flags, td, ps, planner, option, max_drones, confidence, seed, out,
+                          workers, scheduler, dask_local, json, sizes, range_runs)
+            return
         mission = flags.mission()
         fields: dict[str, Any] = {
             "mission": mission, "td": td, "ps": ps,
@@ -198,3 +264,45 @@ def design(
     _print(answer)
     if plot is not None:
         console.print(f"figure written to {plot}")
+
+
+def _design_range(flags: MissionFlags, td: float, ps: float, planner: list[str] | None,
+                  option: list[str] | None, max_drones: int, confidence: float, seed: int,
+                  out: Path, workers: int | None, scheduler: str | None, dask_local: bool,
+                  json: bool, sizes: str | None, range_runs: int) -> None:
+    """``sarlink design`` without ``--rc``: the range each team size needs
+    (:mod:`sarlink.sizing.ranges`)."""
+    from sarlink.execution import start_workers
+    from sarlink.planners import get_planner
+    from sarlink.sizing import DesignRequest
+    from sarlink.sizing.ranges import range_design, to_json
+
+    if option and _options(option):
+        raise ConfigError("--option applies with --rc only: without it the design finds the "
+                          "range of the paper's drones (on_detect = continue)")
+    if range_runs < 10:
+        raise ConfigError(f"--range-runs must be at least 10, got {range_runs}")
+    team = _team_sizes(sizes, max_drones)
+    fields: dict[str, Any] = {"mission": flags.mission(), "td": td, "ps": ps,
+                              "max_drones": max_drones, "confidence": confidence, "seed": seed,
+                              "options": {}}
+    if planner is not None:
+        fields["planners"] = tuple(planner)
+    else:  # every planner that may fly the same at every range
+        from sarlink.planners import planner_names
+
+        fields["planners"] = tuple(name for name in planner_names()
+                                   if get_planner(name).rule is None
+                                   or get_planner(name).rule.range_free  # type: ignore[union-attr]
+                                   or get_planner(name).kind == "hybrid")
+    try:
+        request = DesignRequest.from_dict(fields)
+    except ConfigError as exc:
+        raise ConfigError(_as_option(str(exc))) from None
+    with start_workers(workers, scheduler=scheduler, dask_local=dask_local) as pool:
+        answers = range_design(request, out, team, range_runs, pool=pool)
+    if json:
+        print_json({"td": td, "ps": ps, "confidence": confidence, "runs": range_runs,
+                    "planners": to_json(answers)})
+        return
+    _print_ranges(request, answers, range_runs)

@@ -53,6 +53,10 @@ def summarize(
         help="target duration t_d, s; repeat for several; default: the horizon")] = None,
     csv: Annotated[bool, typer.Option("--csv", help="print CSV: a row per point and t_d")] = False,
     json: Annotated[bool, typer.Option("--json", help="print JSON records")] = False,
+    rc: Annotated[float | None, typer.Option(
+        help="read every run at this communication range, m, flown or not (runs stored with "
+             "their notification staircase; reachability and connectivity only where flown)")
+    ] = None,
 ) -> None:
     """P_s, P_d, immediate notification, mission time and reachability per grid point."""
     from sarlink.metrics import summarize as summarize_runs  # pandas: only for this command
@@ -65,8 +69,13 @@ def summarize(
             if not (math.isfinite(t) and t > 0):
                 raise ConfigError(f"--td must be a finite number of seconds > 0, got {t:g}")
         by = list(read_manifest(results)["experiment"]["grid"])
+        runs = load(results)
+        if rc is not None:
+            from sarlink.ranges import at_range
+
+            runs = at_range(runs, rc)
         try:
-            table = summarize_runs(load(results), td=td, by=by)
+            table = summarize_runs(runs, td=td, by=by)
         except ValueError as exc:  # no runs yet, or t_d beyond the horizon
             raise ConfigError(str(exc)) from None
     if csv:

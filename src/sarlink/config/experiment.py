@@ -73,6 +73,10 @@ class Experiment(Checked):
     mission: Mission = Field(default_factory=Mission, description="the base mission")
     grid: dict[str, list[Any]] = Field(default_factory=dict,
                                        description="flat parameter -> values to try")
+    staircase: bool = Field(False, description=(
+        "rows of teams that fly the same at every range carry their notification staircase "
+        "(notify_times, notify_rc2), which sarlink.at_range reads at any range; costs most "
+        "of a flight per run unless the grid has several rc of the point"))
 
     @classmethod
     def from_toml(cls, path: str | Path) -> Self:

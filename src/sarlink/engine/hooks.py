@@ -70,7 +70,10 @@ class DistributedRule:
     ``near`` asks the engine to fill ``obs.near`` (pairs within the sensing range) on the
     steps at which drones decide; ``readings`` names the fields of
     :class:`sarlink.config.Readings` that change its runs (the sensitivity analysis reruns
-    only the rules a choice reaches).
+    only the rules a choice reaches). ``range_free`` declares that its decisions never read
+    the links or the range (``obs.adj``, ``obs.routed``, ``obs.spread``, ``obs.knows``,
+    ``obs.nominal``): a team of it flies the same at every range and is flown once for all
+    of them (:mod:`sarlink.engine.ranges`); default False, the safe answer.
     """
 
     name: str
@@ -79,6 +82,7 @@ class DistributedRule:
     due: Callable[..., Any] | None = None
     near: bool = False
     readings: tuple[str, ...] = ()
+    range_free: bool = False
 
     def __post_init__(self) -> None:
         for hook, arity in _RULE_HOOKS.items():
@@ -99,7 +103,10 @@ class RadioModel:
     then jump to the horizon): a ``bool``, or a hook of the mission when it depends on it;
     ``params`` maps a mission to the model's parameter array
     ``rp`` (default: none: the built-in models read the mission's ``channel`` scalars from
-    ``p``).
+    ``p``). ``range_free`` declares that a link exists iff ``d² ≤ r_c² f`` with fades ``f``
+    drawn independently of ``r_c``, as :mod:`sarlink.engine.ranges` redraws them: only the
+    built-in log-normal model's hooks do (a plug-in declaring it is refused), so plug-in
+    models are flown at every range.
     """
 
     name: str
@@ -108,12 +115,22 @@ class RadioModel:
     nominal: Callable[..., Any]
     static: bool | Callable[..., Any] = False
     params: Callable[[Mission], Sequence[float]] | None = None
+    range_free: bool = False
 
     def __post_init__(self) -> None:
         for hook, arity in _RADIO_HOOKS.items():
             fn = getattr(self, hook)
             if not isinstance(fn, bool):
                 check_hook("radio model", self.name, hook, fn, arity)
+        if self.range_free:
+            from sarlink.engine.radios import lognormal  # the one model whose fades are known
+
+            ours = (lognormal.init, lognormal.update, lognormal.nominal)
+            if tuple(python_function(f) for f in (self.init, self.update, self.nominal)) != tuple(
+                    python_function(f) for f in ours) or self.params is not None:
+                raise ConfigError(f"radio model {self.name!r}: range_free is only for the "
+                                  "built-in log-normal hooks (sarlink.engine.ranges redraws "
+                                  "their fades); leave it False")
 
     def hooks(self) -> dict[str, Callable[..., Any]]:
         """The hook functions by name (a ``bool`` ``static`` is not one)."""

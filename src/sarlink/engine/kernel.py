@@ -101,7 +101,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
                       spread, radio_nominal(p, rp), wp, wp_next, wp_end)
     ws = rule_prepare(p, obs)
-    track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw)
+    track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
+                              p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
     acc_reach = acc_conn = 0.0
@@ -135,6 +136,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
+        elif p.trace:
+            records.record_positions(k, px, py, traj_pos)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
                 p.stop == STOP_NOTIFIED and t_not >= 0.0):
             break
@@ -175,7 +178,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
 
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan
-    kk = min(traj_mode.shape[0], k + 1)  # a run stopped early records fewer steps
+    kk = min(traj_pos.shape[0], k + 1)  # a run stopped early records fewer steps
     return RunRecord(t_det, t_not, detector, t_not >= 0.0 and t_not == t_det,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],

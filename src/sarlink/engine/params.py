@@ -67,6 +67,9 @@ class Params(NamedTuple):
     n_steps: int
     stop: int
     record: bool
+    trace: bool
+    """Record the drones' positions at every step and nothing else (the run may still settle):
+    what :mod:`sarlink.engine.ranges` reads a range-free flight from."""
     on_detect: int
     reporters: int
     conb_check: int

@@ -45,13 +45,15 @@ class RunRecord(NamedTuple):
     conn_cum: np.ndarray
     """Time integral of the fraction of drones with a route to the BS over the same."""
     track: Track
-    """The trajectory, empty (zero steps) unless the run was recorded."""
+    """The trajectory, empty (zero steps) unless the run was recorded; a traced run
+    (``Params.trace``) has only the positions."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def new_track(steps: int, n: int, nw: int) -> Track:
-    """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row)."""
-    return Track(np.empty((steps, n, 2)), np.empty((steps, n)),
+def new_track(steps: int, n: int, nw: int, position_steps: int = 0) -> Track:
+    """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row), and
+    for the positions of ``position_steps`` steps if more (a traced run)."""
+    return Track(np.empty((max(steps, position_steps), n, 2)), np.empty((steps, n)),
                  np.empty((steps, n), dtype=np.bool_), np.empty((steps, n), dtype=np.bool_),
                  np.empty((steps, n), dtype=np.int8),
                  np.empty((steps, n + 2, nw), dtype=np.uint64))
@@ -75,6 +77,14 @@ def record_step(k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.n
     track_knows[k] = knows
     track_mode[k] = mode
     links[k] = adj
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def record_positions(k: int, px: np.ndarray, py: np.ndarray, positions: np.ndarray) -> None:
+    """Store the drones' positions of step ``k`` (a traced run, see ``Params.trace``)."""
+    for i in range(positions.shape[1]):
+        positions[k, i, 0] = px[i]
+        positions[k, i, 1] = py[i]
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -3,6 +3,7 @@ kernel's record into a :class:`~sarlink.RunResult`."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -29,9 +30,10 @@ from sarlink.engine.codes import (
     SHADOWING_CODES,
     STOP_CODES,
 )
-from sarlink.engine.params import Params
+from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
+from sarlink.engine.ranges import Critical, critical
 from sarlink.engine.records import RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
@@ -91,7 +93,7 @@ class Prepared:
             altitude=mission.channel.altitude, decorrelation=mission.channel.decorrelation,
             dt=t.dt, ts_steps=mission.steps(t.ts),
             coherence_steps=mission.steps(mission.coherence), n_steps=mission.n_steps,
-            stop=int(STOP_CODES[t.stop]), record=False,
+            stop=int(STOP_CODES[t.stop]), record=False, trace=False,
             on_detect=int(ON_DETECT_CODES[mission.team.on_detect]),
             reporters=int(REPORTERS_CODES[mission.team.reporters]),
             conb_check=int(CHECK_CODES[r.conb_check]), contacts=int(CONTACTS_CODES[r.contacts]),
@@ -114,26 +116,30 @@ class Prepared:
         """The kernel compiled for this team's rule and the mission's radio model."""
         return kernel_for(self.steering.rule, get_radio(self.mission.radio))
 
-    def arguments(self, streams: Streams, scenario: Scenario, *,
-                  trajectory: bool = False) -> tuple[object, ...]:
-        """The kernel's arguments for one run from its random streams and initial conditions."""
+    def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
+                  traced_at: float | None = None) -> tuple[object, ...]:
+        """The kernel's arguments for one run from its random streams and initial conditions;
+        ``traced_at``: a traced flight (``Params.trace``) at that range instead."""
         n = self.mission.team.drones
         if scenario.positions is None:
             pos0 = np.tile(np.asarray(self.mission.area.bs_xy, dtype=float), (n, 1))
         else:
             pos0 = np.asarray(scenario.positions, dtype=float)
-        return (self.params._replace(record=trajectory), self.radio_params,
+        p = self.params._replace(record=trajectory)
+        if traced_at is not None:
+            p = p._replace(rc=traced_at, trace=True)
+        return (p, self.radio_params,
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
                 takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
                                  streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, self.edges, self.nav,
                 self.far)
 
-    def record(self, streams: Streams, scenario: Scenario, *,
-               trajectory: bool = False) -> RunRecord:
+    def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
+               traced_at: float | None = None) -> RunRecord:
         """The kernel's record of one run from its random streams and initial conditions."""
         kernel = self.kernel
-        args = self.arguments(streams, scenario, trajectory=trajectory)
+        args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at)
         if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
             return kernel(*args)
         try:
@@ -147,6 +153,14 @@ class Prepared:
                               f"does not fit the engine's types, docs/plugins.md): "
                               f"{detail}") from exc
 
+    def _start(self, seed: int, run: int, scenario: Scenario | None
+               ) -> tuple[Streams, Scenario]:
+        streams = run_streams(seed, run)
+        if scenario is None:
+            scenario = draw_scenario(self.mission, streams.scenario)
+        scenario.check(self.mission)
+        return streams, scenario
+
     def run(self, seed: int = 0, run: int = 0, *, scenario: Scenario | None = None,
             trajectory: bool = False) -> RunResult:
         """Simulate run ``run`` of an experiment seeded with ``seed`` (with that run's own
@@ -155,10 +169,7 @@ class Prepared:
             own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
             return Prepared.build(self.mission, own).run(seed, run, scenario=scenario,
                                                          trajectory=trajectory)
-        streams = run_streams(seed, run)
-        if scenario is None:
-            scenario = draw_scenario(self.mission, streams.scenario)
-        scenario.check(self.mission)
+        streams, scenario = self._start(seed, run, scenario)
         rec = self.record(streams, scenario, trajectory=trajectory)
         traj = None
         if trajectory:
@@ -169,6 +180,72 @@ class Prepared:
         return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
                           traj)
 
+    @property
+    def range_free(self) -> bool:
+        """Whether the team flies the same at every communication range, as the seams declare
+        it: the radio model's fades do not depend on ``r_c`` (the built-in log-normal model),
+        no drone reports (``on_detect = continue``), and every distributed drone (if any) runs
+        a rule declared ``range_free`` (CovB). Such a run can be flown once for all ranges
+        (:meth:`run_ranges`)."""
+        rule = self.steering.rule
+        return (get_radio(self.mission.radio).range_free and self.params.on_detect != REPORT
+                and (not self.distributed.any() or (rule is not None and rule.range_free)))
+
+    def critical(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = True,
+                 scenario: Scenario | None = None) -> tuple[Scenario, RunRecord, Critical]:
+        """One traced flight of a range-free mission at the smallest range of ``rcs`` (the
+        latest to stop at its notification), its critical ranges and its records at each
+        range of ``rcs``; with the run's initial conditions and the flight's own record.
+        Without ``staircase``, the staircase stops where every range of ``rcs`` is
+        notified."""
+        if self.steering.per_run is not None:  # this run's own plan
+            own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
+            return Prepared.build(self.mission, own).critical(seed, run, rcs,
+                                                              staircase=staircase,
+                                                              scenario=scenario)
+        if not self.range_free:
+            raise ValueError(f"{self.mission.team.planner} with these settings flies "
+                             "differently at each range: fly each range")
+        streams, scenario = self._start(seed, run, scenario)
+        fresh = run_streams(seed, run)  # the looks and fades, drawn again as the flight drew
+        p = self.params
+        rec = self.record(streams, scenario, traced_at=min(rcs))
+        stopped = ((p.stop == STOP_DETECTED and rec.t_detect >= 0.0)
+                   or (p.stop == STOP_NOTIFIED and rec.t_notify >= 0.0))
+        positions = rec.track.positions
+        crit = critical(p, p._replace(rc=1.0), float(scenario.target[0]),
+                        float(scenario.target[1]), positions,
+                        positions.shape[0] - 1 if stopped else p.n_steps, fresh.shadow,
+                        fresh.look, self.cp_steps, np.array([rc * rc for rc in rcs]), staircase)
+        return scenario, rec, crit
+
+    def run_ranges(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = False,
+                   scenario: Scenario | None = None) -> list[RunResult]:
+        """Run ``run`` at every range of ``rcs`` from one flight (a range-free mission only):
+        the same results, bit for bit, as :meth:`run` with the mission at each range; with
+        ``staircase``, each also with its notification staircase
+        (:attr:`sarlink.RunResult.notify_times`)."""
+        p = self.params
+        scenario, rec, crit = self.critical(seed, run, rcs, staircase=staircase,
+                                            scenario=scenario)
+        target = (float(scenario.target[0]), float(scenario.target[1]))
+        out = []
+        for j, k in enumerate(crit.notified.tolist()):
+            t_notify = None if k < 0 else float(k * p.dt)
+            stairs: dict[str, Any] = {}
+            if staircase:  # a run stopped at its notification knows its staircase up to there
+                keep = crit.notify_steps <= (k if p.stop == STOP_NOTIFIED and k >= 0
+                                             else p.n_steps)
+                stairs = {"notify_times": crit.notify_steps[keep] * p.dt,
+                          "notify_rc2": crit.notify_keys[keep]}
+            out.append(RunResult(
+                seed=seed, run=run, target=target,
+                t_detect=None if rec.t_detect < 0 else rec.t_detect, t_notify=t_notify,
+                immediate=t_notify is not None and t_notify == rec.t_detect,
+                detector=None if rec.detector < 0 else rec.detector,
+                checkpoints=rec.checkpoints, reach_cum=crit.reach_cum[j],
+                connected_cum=crit.conn_cum[j], **stairs))
+        return out
 
 def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
                trajectory: Trajectory | None = None) -> RunResult:

@@ -2,7 +2,10 @@
 
 Figures 2–6 read one main sweep (planner × team size × communication range, simulated to
 ``t_d = 4000 s``): every ``t_d`` they show comes from the same runs' event times, so one sweep
-serves them all and their numbers agree with each other. Fig. 7a (imperfect sensing) and
+serves them all and their numbers agree with each other. Its rows carry the notification
+staircase of the teams that fly the same at every range (mTSP, CovB, mTSP-ConB up to N_r),
+whose flights it shares between its three ranges anyway: Fig. :data:`RANGE_FIG` reads P_s at
+every range from 100 m to 3000 m from them. Fig. 7a (imperfect sensing) and
 Fig. 7b (shadowing) change the mission itself and need sweeps of their own; they plot only
 detection (7a) or notification (7b), so their runs stop at that event, which makes them
 several times faster. Fig. 1 times the planners rather than simulating missions. Every
@@ -25,6 +28,7 @@ import pandas as pd
 from sarlink.config import Experiment, Mission
 from sarlink.metrics import success_curve, summarize
 from sarlink.planners import PAPER_PLANNERS, planner_names
+from sarlink.ranges import range_curve
 
 __all__ = [
     "BEYOND",
@@ -39,6 +43,10 @@ __all__ = [
     "P_MISS",
     "QUICK_RUNS",
     "RANGES",
+    "RANGE_CURVE",
+    "RANGE_DRONES",
+    "RANGE_FIG",
+    "RANGE_TDS",
     "RUNS",
     "SEED",
     "SIGMA",
@@ -76,6 +84,13 @@ TD_LONG = 4000.0
 CURVE_TDS = np.arange(100.0, TD_LONG + 1, 100.0)
 """The t_d at which Fig. 2 reads P_s from the empirical CDF of notification times, s."""
 
+RANGE_CURVE = np.arange(100.0, 3000.0 + 1, 25.0)
+"""The continuous communication ranges of Fig. :data:`RANGE_FIG`, m."""
+RANGE_DRONES = (4, 10, 22)
+"""Its team sizes."""
+RANGE_TDS = (TD_SHORT, TD_FIG3)
+"""Its target durations, s."""
+
 P_MISS = tuple(round(0.1 * k, 1) for k in range(10))
 """Miss probabilities of Fig. 7a."""
 SIGMA = 3.0
@@ -105,12 +120,22 @@ def _main(runs: int) -> Experiment:
         name="Figs. 2-6", seed=SEED, runs=runs,
         mission=Mission.build(horizon=TD_LONG),
         grid={"planner": list(PAPER_PLANNERS), "drones": list(DRONES), "rc": list(RANGES)},
+        staircase=True,
     )
+
+
+def _range_table(runs: pd.DataFrame) -> pd.DataFrame:
+    """P_s against the range at :data:`RANGE_TDS` for :data:`RANGE_DRONES`, from the
+    staircases of the runs flown once for every range (one range's rows: each has them)."""
+    rows = runs[(runs["rc"] == RANGES[0]) & runs["drones"].isin(RANGE_DRONES)]
+    return pd.concat([range_curve(rows, RANGE_CURVE, td, ["planner", "drones"])
+                      for td in RANGE_TDS], ignore_index=True)
 
 
 def _main_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
     return {"main": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=_BY),
-            "curve": success_curve(runs, CURVE_TDS, by=_BY)}
+            "curve": success_curve(runs, CURVE_TDS, by=_BY),
+            "range_curve": _range_table(runs)}
 
 
 def _miss(runs: int) -> Experiment:
@@ -175,17 +200,20 @@ BEYOND = 8
 """The number of the figure beyond the paper's seven: its planners with drones that report."""
 OTHERS = 9
 """The number of the figure of the other planners (the search patterns) beside the paper's."""
+RANGE_FIG = 10
+"""The number of the figure of P_s against a continuous communication range."""
 
 EXPERIMENTS = {e.name: e for e in (
-    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS), _main, _main_tables),
+    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS, RANGE_FIG), _main, _main_tables),
     PaperExperiment("miss", (7,), _miss, _miss_tables),
     PaperExperiment("shadowing", (7,), _shadowing, _shadowing_tables),
     PaperExperiment("report", (BEYOND, OTHERS), _report, _report_tables),
     PaperExperiment("others", (OTHERS,), _others, _others_tables),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
-:data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`) and ``curve`` (``success_curve`` at
-:data:`CURVE_TDS`); ``others`` the table ``others``, by ``on_detect`` too."""
+:data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
+:data:`CURVE_TDS`) and ``range_curve`` (:func:`sarlink.ranges.range_curve`); ``others``
+the table ``others``, by ``on_detect`` too."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:

@@ -33,6 +33,9 @@ from sarlink.paper.experiments import (
     FIG2_DRONES,
     FIG5_RANGES,
     OTHERS,
+    RANGE_DRONES,
+    RANGE_FIG,
+    RANGE_TDS,
     RANGES,
     SIGMA,
     TD_FIG3,
@@ -42,7 +45,7 @@ from sarlink.paper.experiments import (
 from sarlink.planners import get_planner, planner_names
 
 __all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
-           "fig8", "fig9", "save"]
+           "fig8", "fig9", "fig10", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
@@ -349,6 +352,27 @@ def fig9(main: pd.DataFrame, report: pd.DataFrame, others: pd.DataFrame,
     return fig
 
 
+@_style()
+def fig10(range_curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Beyond the paper: how much range a team needs. P_s(t_d) against a continuous r_c for
+    the planners that fly the same at every range, a row per t_d and a column per team size,
+    the paper's three ranges marked."""
+    fig, axes = _axes(fig, len(RANGE_TDS), len(RANGE_DRONES))
+    planners = _planners(range_curve)
+    for row, td in zip(axes, RANGE_TDS, strict=True):
+        for ax, drones in zip(row, RANGE_DRONES, strict=True):
+            rows = range_curve[(range_curve["td"] == td) & (range_curve["drones"] == drones)]
+            _lines(ax, rows, "rc", P_S, planners, markevery=12)
+            for rc in RANGES:
+                ax.axvline(rc, color="0.6", lw=0.8, ls=":")
+            ax.set(title=f"$N_m$ = {drones}, $t_d$ = {td:g} s",
+                   xlabel="communication range $r_c$ (m)")
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    _legend(fig, planners)
+    return fig
+
+
 def save(fig: Figure, folder: Path, name: str) -> list[Path]:
     """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -422,6 +446,11 @@ def _fig9_values(main: pd.DataFrame, report: pd.DataFrame, others: pd.DataFrame
         rows, ["on_detect", "rc", "td", "planner", "drones"], [P_S]))]
 
 
+def _fig10_values(range_curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    rows = range_curve[range_curve["rc"] % 250.0 == 0.0]
+    return [("every 250 m", _values(rows, ["td", "drones", "planner", "rc"], [P_S]))]
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """A paper figure: what it shows, the summary tables it needs, how to draw it and the
@@ -468,5 +497,12 @@ FIGURES = {f.number: f for f in (
                "that fly to tell the BS (on_detect = report), each against the paper's "
                "planners flown the same way.", ("main", "report", "others"), fig9,
                _fig9_values),
+    FigureSpec(RANGE_FIG, "Beyond the paper: how much range a team needs. P_s(t_d) against a "
+               "continuous communication range, 100-3000 m, for the planners whose drones fly "
+               "the same at every range (mTSP, CovB; mTSP-ConB where all its drones fly the "
+               "plan), read from the runs of Figs. 2-6 (one flight per run, its notification "
+               "staircase); dotted: the paper's three ranges.", ("range_curve",), fig10,
+               _fig10_values),
 )}
-"""Every figure by its number in the paper, and :data:`BEYOND` and :data:`OTHERS` after them."""
+"""Every figure by its number in the paper, and :data:`BEYOND`, :data:`OTHERS` and
+:data:`RANGE_FIG` after them."""

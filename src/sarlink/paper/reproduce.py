@@ -149,7 +149,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     quick
         Few runs: the trends in minutes, with wide intervals. The report says so.
     figures
-        Figure numbers to reproduce (the paper's 1–7, 8 and 9 beyond it); default all.
+        Figure numbers to reproduce (the paper's 1–7, 8 to 10 beyond it); default all.
     workers, scheduler
         As for :func:`sarlink.sweep`: local worker processes, or a Dask scheduler's address.
     progress

@@ -66,7 +66,8 @@ def _planner_sweeps(exp: PaperExperiment, runs: int, choices: dict[str, str]
         values = "-".join(choices[c] for c in reach) or "any"
         yield (Path(exp.name) / name / values,
                Experiment(name=f"{experiment.name}, {planner.label}", seed=experiment.seed,
-                          runs=runs, mission=mission, grid=grid))
+                          runs=runs, mission=mission, grid=grid,
+                          staircase=experiment.staircase))
 
 
 def load_runs(out: str | Path, experiment: str, reading: str = DEFAULT_READING

@@ -12,10 +12,10 @@ __all__ = ["DISC", "SHADOWING", "broken_radios", "get_radio", "radio_names", "ra
            "radios_in_code", "register_radio"]
 
 DISC = RadioModel("disc", lognormal.init, lognormal.update, lognormal.nominal,
-                  static=lognormal.static)
+                  static=lognormal.static, range_free=True)
 """Eq. 4: linked within r_c (the model below with ``sigma = 0``: one kernel for both)."""
 SHADOWING = RadioModel("shadowing", lognormal.init, lognormal.update, lognormal.nominal,
-                       static=lognormal.static)
+                       static=lognormal.static, range_free=True)
 """Eq. 13: log-normal fades per link, redrawn every coherence time."""
 
 

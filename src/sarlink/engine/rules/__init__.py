@@ -11,8 +11,8 @@ _CONB_READINGS = ("conb_check", "contacts", "isolated", "conb_fallback", "takeof
 _COVB_READINGS = ("covb_direction", "takeoff")
 
 COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True,
-                       readings=_COVB_READINGS)
-"""CovB's repulsion (Eqs. 6-8)."""
+                       readings=_COVB_READINGS, range_free=True)
+"""CovB's repulsion (Eqs. 6-8): it reads the pairs within the sensing range, never a link."""
 CONB = DistributedRule("conb", conb.decide, prepare=conb.prepare, due=conb.due,
                        readings=_CONB_READINGS)
 """ConB's attachment to the BS (Eqs. 9-11)."""

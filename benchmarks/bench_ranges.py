@@ -1,0 +1,126 @@
+"""CPU of a sweep over 8 communication ranges against a sweep over one (issue 22).
+
+A range-free team (here CovB) flies once per run for every range of a grid over ``rc``
+(:mod:`sarlink.engine.ranges`); a sweep over one range flies as it always did. This script
+sweeps CovB over 8 ranges and over one with the sweep's own code (planning, jobs, tables,
+Parquet files) but its jobs run in this process, so that the CPU time is that of the work,
+without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
+are equal. It also times the engine alone per run: a plain flight, a traced flight with its
+critical ranges read at one range, and read at 8 ranges.
+Run with
+
+    python benchmarks/bench_ranges.py --runs 200 --out benchmarks/results/ranges.md
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import platform
+import tempfile
+import time
+from pathlib import Path
+
+import pandas as pd
+
+from sarlink import Experiment, Mission, execution, prepare
+from sarlink.execution import sweep_all
+from sarlink.simulation import plugins_in_code
+
+RANGES = [250.0, 500.0, 750.0, 1000.0, 1250.0, 1500.0, 2000.0, 3000.0]
+
+
+def experiment(rcs: list[float], runs: int, drones: int) -> Experiment:
+    return Experiment.from_dict({"name": "ranges", "seed": 7, "runs": runs, "chunk": 50,
+                                 "mission": {"team": {"planner": "covb", "drones": drones}},
+                                 "grid": {"rc": rcs}})
+
+
+class InProcess:
+    """Workers that run every job in this process, one after the other."""
+
+    def results(self, jobs):  # type: ignore[no-untyped-def]
+        for call, job in zip(execution._calls(jobs), jobs, strict=True):
+            yield job, execution._run_chunk(*call)
+
+
+assert plugins_in_code() == ((), ())  # nothing to hand to a worker: one process is the same
+
+
+def timed_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> tuple[float,
+                                                                                 pd.DataFrame]:
+    """CPU seconds of a sweep whose jobs run in this process, and its rows."""
+    start = time.process_time()
+    (rows,) = sweep_all([(experiment(rcs, runs, drones), folder)], progress=False,
+                        pool=InProcess())
+    return time.process_time() - start, rows
+
+
+def engine_ms(drones: int, runs: int) -> tuple[float, float, float]:
+    """CPU ms per run: a flight, a traced flight with its critical ranges, read at 8 ranges."""
+    prepared = prepare(Mission.build(planner="covb", drones=drones, rc=1000.0))
+    prepared.run(0, 0)
+    prepared.run_ranges(0, 0, RANGES)
+    out = []
+    for work in (lambda k: prepared.run(0, k), lambda k: prepared.run_ranges(0, k, [1000.0]),
+                 lambda k: prepared.run_ranges(0, k, RANGES)):
+        start = time.process_time()
+        for k in range(runs):
+            work(k)
+        out.append(1e3 * (time.process_time() - start) / runs)
+    return out[0], out[1], out[2]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=200)
+    parser.add_argument("--drones", type=int, default=10)
+    parser.add_argument("--out", type=Path, default=Path("benchmarks/results/ranges.md"))
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        root = Path(tmp)
+        timed_sweep([1000.0], 2, args.drones, root / "warm")  # compile and cache the kernels
+        one, _ = timed_sweep([1000.0], args.runs, args.drones, root / "one")
+        eight, together = timed_sweep(RANGES, args.runs, args.drones, root / "eight")
+        apart = pd.concat([timed_sweep([rc], args.runs, args.drones, root / f"{rc:g}")[1]
+                           for rc in RANGES])
+    key = ["rc", "run"]
+    equal = together.drop(columns="point").sort_values(key).reset_index(drop=True).equals(
+        apart.drop(columns="point").sort_values(key).reset_index(drop=True))
+    flight, critical, read8 = engine_ms(args.drones, min(args.runs, 50))
+    lines = [
+        "# One flight, every range: CPU of a sweep over 8 ranges against one",
+        "",
+        f"`python benchmarks/bench_ranges.py --runs {args.runs} --drones {args.drones}`, "
+        f"{datetime.date.today()}, {platform.processor() or platform.machine()}, "
+        "the sweeps' jobs run in the benchmark's process: CPU time of the whole sweep "
+        "(flights, tables, files), without a worker's start-up.",
+        "",
+        f"CovB, N = {args.drones}, {args.runs} runs per point of 4000 s, chunks of 50 runs.",
+        "",
+        "| sweep | CPU s | per run and range, ms |",
+        "|---|---|---|",
+        f"| rc = 1000 m | {one:.2f} | {1e3 * one / args.runs:.2f} |",
+        f"| rc over {len(RANGES)} values ({', '.join(f'{r:g}' for r in RANGES)} m) | "
+        f"{eight:.2f} | {1e3 * eight / args.runs / len(RANGES):.2f} |",
+        "",
+        f"Ratio of the 8-range sweep to the one-range sweep: **{eight / one:.2f}×**.",
+        f"Rows of the 8-range sweep equal those of 8 one-range sweeps: **{equal}**.",
+        "",
+        "The engine alone, CPU ms per run (mean of "
+        f"{min(args.runs, 50)} runs, N = {args.drones}):",
+        "",
+        "| work | ms per run |",
+        "|---|---|",
+        f"| plain flight (`Prepared.run`, what a one-range sweep flies) | {flight:.2f} |",
+        f"| traced flight read at one range (`Prepared.run_ranges`) | {critical:.2f} |",
+        f"| traced flight read at 8 ranges (`Prepared.run_ranges`) | {read8:.2f} |",
+        "",
+    ]
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text("\n".join(lines))
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

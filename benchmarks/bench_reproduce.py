@@ -1,0 +1,122 @@
+"""Where the reproduction's time goes: CPU per experiment, planner and figure (issue 22).
+
+Every sweep of ``sarlink reproduce`` (the experiments of :mod:`sarlink.paper.experiments`,
+split by planner as the reproduction splits them, under the default reading) is swept with
+the sweep's own code at a reduced number of runs per grid point, its jobs run in this process
+(CPU time of the work: flights, critical ranges, tables, files; no worker start-up, mTSP
+plans solved and kernels compiled beforehand, not counted), and the CPU is scaled linearly to
+the paper's 2000 runs per point. Figures are drawn from the tables and timed too. Run with
+
+    python benchmarks/bench_reproduce.py --runs 20 --out benchmarks/results/reproduce.md
+
+The full 2000-run reproduction is not run: the machine is shared. The scaled numbers assume
+that a run's cost does not depend on its index (runs 0 .. R-1 stand for all 2000).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import platform
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+from sarlink import execution, prepare
+from sarlink.config import DEFAULT_READING, get_reading
+from sarlink.execution import sweep_all
+from sarlink.paper.experiments import EXPERIMENTS, RUNS
+from sarlink.paper.figures import FIGURES
+from sarlink.paper.variants import _planner_sweeps
+from sarlink.planners import get_planner
+from sarlink.simulation import plugins_in_code
+
+
+class InProcess:
+    """Workers that run every job in this process, one after the other."""
+
+    def results(self, jobs):  # type: ignore[no-untyped-def]
+        for call, job in zip(execution._calls(jobs), jobs, strict=True):
+            yield job, execution._run_chunk(*call)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=20, help="runs per grid point")
+    parser.add_argument("--out", type=Path, default=Path("benchmarks/results/reproduce.md"))
+    args = parser.parse_args()
+    assert plugins_in_code() == ((), ())
+    choices = get_reading(DEFAULT_READING).choices
+    rows = []  # experiment, planner, points, CPU s
+    tables: dict[str, list] = defaultdict(list)
+    with tempfile.TemporaryDirectory() as tmp:
+        for exp in EXPERIMENTS.values():
+            for folder, experiment in _planner_sweeps(exp, args.runs, choices):
+                points = experiment.points()
+                for _, mission in points:  # plans and kernels, outside the timing
+                    prepare(mission).run(experiment.seed, 0)
+                start = time.process_time()
+                (frame,) = sweep_all([(experiment, Path(tmp) / folder)], progress=False,
+                                     pool=InProcess())
+                cpu = time.process_time() - start
+                rows.append((exp.name, experiment.mission.team.planner, len(points), cpu))
+                tables[exp.name].append(frame)
+                print(f"{exp.name:10s} {experiment.mission.team.planner:18s} {len(points):4d} "
+                      f"points {cpu:7.2f} s", flush=True)
+    import pandas as pd
+
+    summaries = {}
+    for exp in EXPERIMENTS.values():
+        summaries.update(exp.tables(pd.concat(tables[exp.name], ignore_index=True)))
+    drawing = {}
+    for number, spec in FIGURES.items():
+        if all(t in summaries for t in spec.tables):
+            start = time.process_time()
+            spec.draw(*(summaries[t] for t in spec.tables))
+            drawing[number] = time.process_time() - start
+    scale = RUNS / args.runs
+    total = sum(r[3] for r in rows) * scale
+    lines = [
+        "# Where the reproduction's time goes",
+        "",
+        f"`python benchmarks/bench_reproduce.py --runs {args.runs}`, {datetime.date.today()}, "
+        f"{platform.processor() or platform.machine()}, on the shared 2-core host: every sweep "
+        f"of `sarlink reproduce` under the default reading at **{args.runs} runs per grid "
+        f"point** (not the paper's {RUNS}: the machine is shared), its jobs in this process "
+        "(CPU of flights, critical ranges, tables and files; no worker start-up; plans and "
+        f"kernels made beforehand), scaled ×{scale:g} to {RUNS} runs per point.",
+        "",
+        "| experiment | figures | planner | points | CPU s measured | ms per run | "
+        f"CPU min at {RUNS} runs | share |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for name, planner, points, cpu in sorted(rows, key=lambda r: -r[3]):
+        figures = ", ".join(map(str, EXPERIMENTS[name].figures))
+        lines.append(f"| {name} | {figures} | {get_planner(planner).label} | {points} | "
+                     f"{cpu:.2f} | {1e3 * cpu / (points * args.runs):.2f} | "
+                     f"{cpu * scale / 60:.1f} | {cpu * scale / total:.1%} |")
+    lines += ["", "By experiment (and the figures it feeds):", "",
+              f"| experiment | figures | CPU min at {RUNS} runs | share |", "|---|---|---|---|"]
+    for exp in EXPERIMENTS.values():
+        cpu = sum(r[3] for r in rows if r[0] == exp.name) * scale
+        lines.append(f"| {exp.name} | {', '.join(map(str, exp.figures))} | "
+                     f"{cpu / 60:.1f} | {cpu / total:.1%} |")
+    by_planner: dict[str, float] = defaultdict(float)
+    for _, planner, _, cpu in rows:
+        by_planner[planner] += cpu * scale
+    lines += ["", "By planner, over every experiment:", "",
+              f"| planner | CPU min at {RUNS} runs | share |", "|---|---|---|"]
+    for planner, cpu in sorted(by_planner.items(), key=lambda kv: -kv[1]):
+        lines.append(f"| {get_planner(planner).label} | {cpu / 60:.1f} | {cpu / total:.1%} |")
+    lines += ["", f"Total: **{total / 60:.1f} CPU-minutes** of sweeps at {RUNS} runs per point "
+              f"(about {total / 120:.1f} min of wall time on 2 idle cores).", "",
+              "Drawing each figure from its tables (independent of the runs), CPU s: " +
+              ", ".join(f"Fig. {n} {s:.2f}" for n, s in sorted(drawing.items())) + ".", ""]
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text("\n".join(lines))
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
