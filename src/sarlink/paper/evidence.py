@@ -43,17 +43,23 @@ class Outcome(enum.Enum):
     HOLDS = "holds"
     CONTRADICTED = "contradicted"
     UNDECIDED = "undecided at this sample size"
+    NOT_TESTABLE = "not testable at this setting"
+    """Nothing at this setting can separate what is compared: two planners that fly alike on
+    every run (both notify in every run, say). More runs cannot settle it; another setting
+    can."""
 
 
 def worst(outcomes: Iterable[Outcome]) -> Outcome:
-    """The outcome of parts together: contradicted if any is, holds only if all do."""
+    """The outcome of parts together: contradicted if any is, otherwise undecided if any is,
+    otherwise holds if any does; parts not testable at their setting decide nothing, and a
+    claim none of whose parts can be tested is not testable."""
     found = set(outcomes)
     if not found:
         raise ValueError("a claim needs at least one tested part")
-    for outcome in (Outcome.CONTRADICTED, Outcome.UNDECIDED):
+    for outcome in (Outcome.CONTRADICTED, Outcome.UNDECIDED, Outcome.HOLDS):
         if outcome in found:
             return outcome
-    return Outcome.HOLDS
+    return Outcome.NOT_TESTABLE
 
 
 @dataclass(frozen=True)
@@ -65,9 +71,13 @@ class Estimate:
     hi: float
     digits: int = 3
     """Decimals when printed."""
+    tied: bool = False
+    """A paired difference that is zero in every run: nothing here can separate the two, so
+    every comparison with it is not testable at this setting."""
 
     def __str__(self) -> str:
-        return format_interval(self.value, self.lo, self.hi, self.digits)
+        text = format_interval(self.value, self.lo, self.hi, self.digits)
+        return text + " (equal in every run)" if self.tied else text
 
     def scaled(self, k: float) -> Estimate:
         """``k`` times the estimate, ``k`` ≥ 0."""
@@ -86,17 +96,23 @@ class Estimate:
 
     def above(self, x: float = 0.0) -> Outcome:
         """Is the value above ``x``: holds if the interval is, contradicted if it lies below."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         return (Outcome.HOLDS if self.lo > x else Outcome.CONTRADICTED if self.hi < x
                 else Outcome.UNDECIDED)
 
     def below(self, x: float = 0.0) -> Outcome:
         """Is the value below ``x``: holds if the interval is, contradicted if it lies above."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         return (Outcome.HOLDS if self.hi < x else Outcome.CONTRADICTED if self.lo > x
                 else Outcome.UNDECIDED)
 
     def within(self, lo: float, hi: float) -> Outcome:
         """Is the value within ``[lo, hi]``: holds if the whole interval is, contradicted if
         the interval misses it."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         if lo <= self.lo and self.hi <= hi:
             return Outcome.HOLDS
         return Outcome.CONTRADICTED if self.hi < lo or self.lo > hi else Outcome.UNDECIDED
