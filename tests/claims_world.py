@@ -54,10 +54,6 @@ def by_planner(rules: Mapping[str, Rule], other: Rule) -> Rule:
     return lambda point, u, w: rules.get(point[0], other)(point, u, w)
 
 
-def when(test: Callable[[Point], bool], yes: Rule, no: Rule) -> Rule:
-    return lambda point, u, w: (yes if test(point) else no)(point, u, w)
-
-
 DEFAULTS: dict[str, Rule] = {
     "t_detect": times(0.6, 0.8, 0.95),
     "t_notify": lambda point, u, w: times(0.6, 0.8, 0.95)(point, u, w) + 200.0,
@@ -72,25 +68,29 @@ class World:
     """Columns' rules (defaults :data:`DEFAULTS`), and how many runs each point has."""
 
     rules: dict[str, Rule] = field(default_factory=dict)
-    runs: int = 2000
+    runs: int = 1000
 
     def _frame(self, points: list[Point], keys: list[str], tds: tuple[float, ...]
                ) -> pd.DataFrame:
         rules = DEFAULTS | self.rules
         u = np.random.default_rng(1).random(self.runs)
-        frames = []
+        columns: dict[str, list[np.ndarray]] = {c: [] for c in (
+            *keys, "run", "t_detect", "t_notify", "immediate",
+            *(f"{name}@{td:g}" for td in tds for name in ("reach", "connected")))}
         for point in points:
             w = np.random.default_rng(zlib.crc32(repr(point).encode())).random(self.runs)
-            frame = pd.DataFrame(dict(zip(keys, point, strict=True)), index=range(self.runs))
-            frame["run"] = np.arange(self.runs)
+            for k, value in zip(keys, point, strict=True):
+                columns[k].append(np.full(self.runs, value, dtype=object))
+            columns["run"].append(np.arange(self.runs))
             for column in ("t_detect", "t_notify"):
-                frame[column] = rules[column](point, u, w).astype(float)
-            frame["immediate"] = rules["immediate"](point, u, w).astype(bool)
+                columns[column].append(rules[column](point, u, w).astype(float))
+            columns["immediate"].append(rules["immediate"](point, u, w).astype(bool))
+            reach, connected = rules["reach"](point, u, w), rules["connected"](point, u, w)
             for td in tds:
-                frame[f"reach@{td:g}"] = rules["reach"](point, u, w).astype(float)
-                frame[f"connected@{td:g}"] = rules["connected"](point, u, w).astype(float)
-            frames.append(frame)
-        return pd.concat(frames, ignore_index=True)
+                columns[f"reach@{td:g}"].append(reach.astype(float))
+                columns[f"connected@{td:g}"].append(connected.astype(float))
+        frame = pd.DataFrame({c: np.concatenate(v) for c, v in columns.items()})
+        return frame.astype({k: type(points[0][i]) for i, k in enumerate(keys)})
 
     def main(self) -> pd.DataFrame:
         points = list(itertools.product(PAPER_PLANNERS, DRONES, RANGES))
@@ -110,6 +110,7 @@ class World:
                 "shadowing_runs": self.shadowing()}
 
 
-def world(**rules: Rule) -> dict[str, pd.DataFrame]:
-    """The tables of a world with these columns' rules."""
-    return World(dict(rules)).tables()
+def world(**rules: Rule) -> Callable[[], dict[str, pd.DataFrame]]:
+    """The tables of a world with these columns' rules, made when called (so that a test
+    module's cases cost nothing to collect)."""
+    return lambda: World(dict(rules)).tables()
