@@ -15,6 +15,7 @@ from hypothesis import strategies as st
 from scipy import stats
 
 from claims_world import Rule, by_planner, flag, level, times, world
+from sarlink.metrics import wilson
 from sarlink.paper import findings as claims
 from sarlink.paper.claim import CLAIMS, Claim, Settings, tally
 from sarlink.paper.evidence import Estimate, Outcome, Verdict, worst
@@ -42,24 +43,27 @@ def _tail(b: int, m: int, p: float) -> float:
 # -- paired statistics ----------------------------------------------------------------------------
 
 
-def test_a_difference_of_success_indicators_is_mcnemars_exact_interval() -> None:
-    """7 runs only the first succeeds in, 1 only the second, of 20: the interval is the
-    Clopper-Pearson interval of 7/8 (its bounds solve the binomial tails, by enumeration)
-    mapped to the difference (b − c)/n with m/n = 8/20."""
+def test_a_difference_of_success_indicators_combines_exact_and_wilson_intervals() -> None:
+    """7 runs only the first succeeds in, 1 only the second, of 20: d = (8/20)(2π − 1) with
+    π's Clopper-Pearson bounds at 97.5% (they solve the binomial tails, by enumeration) and
+    8/20's Wilson bounds at 97.5%, combined at their extremes."""
     a = np.array([1] * 7 + [0] * 1 + [1] * 5 + [0] * 7, dtype=bool)
     b = np.array([0] * 7 + [1] * 1 + [1] * 5 + [0] * 7, dtype=bool)
     d = (_indicator(a) - _indicator(b)).estimate()
     assert d.value == pytest.approx(6 / 20)
-    lo, hi = (d.lo * 20 / 8 + 1) / 2, (d.hi * 20 / 8 + 1) / 2  # back to the share of 8
-    assert _tail(7, 8, lo) == pytest.approx(0.025, abs=1e-9)
-    assert 1 - _tail(8, 8, hi) == pytest.approx(0.025, abs=1e-9)
-    # McNemar's exact two-sided p = 2 · 9/256 = 0.07: not significant, and the interval says so
+    few, many = wilson(8, 20, z=float(stats.norm.ppf(0.9875)))
+    lo = d.lo / many if d.lo < 0 else d.lo / few  # 2π_lo − 1
+    pi_lo, pi_hi = (lo + 1) / 2, (d.hi / many + 1) / 2
+    assert _tail(7, 8, pi_lo) == pytest.approx(0.0125, abs=1e-9)
+    assert 1 - _tail(8, 8, pi_hi) == pytest.approx(0.0125, abs=1e-9) or pi_hi == 1.0
+    assert d.hi > d.value  # unlike an interval conditional on the 8 discordant runs
+    # McNemar's exact two-sided p = 2 · 9/256 = 0.07: no sign, and the interval says so
     assert stats.binomtest(7, 8).pvalue == pytest.approx(2 * 9 / 256)
     assert d.above() is UNDECIDED
 
 
 @given(st.integers(0, 30), st.integers(0, 30), st.integers(0, 40))
-def test_the_paired_decision_is_mcnemars_exact_test(only_a: int, only_b: int, both: int) -> None:
+def test_the_paired_sign_is_mcnemars_exact_test(only_a: int, only_b: int, both: int) -> None:
     a = np.array([1] * only_a + [0] * only_b + [1] * both, dtype=bool)
     b = np.array([0] * only_a + [1] * only_b + [1] * both, dtype=bool)
     if not len(a):
@@ -68,7 +72,7 @@ def test_the_paired_decision_is_mcnemars_exact_test(only_a: int, only_b: int, bo
     if only_a + only_b == 0:
         assert d.tied and d.above() is UNTESTABLE and d.below() is UNTESTABLE
         return
-    significant = stats.binomtest(only_a, only_a + only_b).pvalue < 0.05
+    significant = stats.binomtest(only_a, only_a + only_b).pvalue < 0.025
     assert (d.above() is not UNDECIDED) == significant
     assert d.lo <= d.value <= d.hi
     mirrored = (_indicator(b) - _indicator(a)).estimate()

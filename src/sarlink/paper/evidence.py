@@ -1,21 +1,23 @@
-"""The evidence a claim is decided on: estimates with 95% intervals and three-way outcomes.
+"""The evidence a claim is decided on: estimates with 95% intervals and four outcomes.
 
-The statistics are deliberately conservative, so that a claim *holds* only where the
-intervals support it and is *contradicted* only where they exclude it; in between it is
-*undecided at this sample size*, which more runs per point can settle:
+A part of a claim *holds* only where its interval supports it and is *contradicted* only where
+the interval excludes it; in between it is *undecided at this sample size*, which more runs
+per point can settle; and it is *not testable at this setting* where what it compares is equal
+in every run (:attr:`Estimate.tied`), which no number of runs can settle.
 
 - An *estimate* is a value with a 95% interval: the Wilson interval of a probability, or
-  mean ± 1.96 standard errors of a mean (:meth:`sarlink.metrics.Measure.interval`).
-- A *difference* of two estimates has Newcombe's hybrid score interval
+  mean ± 1.96 standard errors of a mean (:meth:`sarlink.metrics.Measure.interval`). The
+  claims' comparisons are paired (:mod:`sarlink.paper.paired`); the unpaired tools here serve
+  summary tables alone (beyond the paper, :mod:`sarlink.paper.beyond`) and Fig. 1's timings.
+- A *difference* of two independent estimates has Newcombe's hybrid score interval
   ``d − √((a − a_lo)² + (b_hi − b)²) .. d + √((a_hi − a)² + (b − b_lo)²)`` (for means it is
-  ``d ± 1.96 √(se_a² + se_b²)``). It treats the two grid points as independent; with common
-  random numbers their runs search for the same targets and are positively correlated, so the
-  interval is wider than a paired one: conservative.
-- An *average over team sizes* of estimates averages their bounds too. The half-width of a sum
-  is at most the sum of half-widths whatever the correlations (Minkowski), so this interval is
-  conservative as well. A *change* from one estimate to another, and the *spread* of several,
-  take the extreme combinations of their bounds, valid under any correlation too.
-- A claim of several parts is contradicted if any part is, and holds only if every part does.
+  ``d ± 1.96 √(se_a² + se_b²)``).
+- An *average* of estimates averages their bounds too. The half-width of a sum is at most the
+  sum of half-widths whatever the correlations (Minkowski), so this interval is conservative;
+  a *peak* takes the largest of each bound, the interval of the largest true value when every
+  interval covers its own.
+- A claim of several parts is contradicted if any part is, undecided if any part is, and
+  holds if a part holds; parts not testable decide nothing unless every part is.
 """
 
 from __future__ import annotations
@@ -34,7 +36,7 @@ from sarlink.metrics import MEASURES, format_interval
 from sarlink.paper.experiments import DRONES
 
 __all__ = ["Estimate", "Grid", "Outcome", "Part", "PlanTimes", "SummaryTables", "Verdict",
-           "average", "change", "peak", "spread", "worst"]
+           "average", "peak", "worst"]
 
 
 class Outcome(enum.Enum):
@@ -117,12 +119,6 @@ class Estimate:
             return Outcome.HOLDS
         return Outcome.CONTRADICTED if self.hi < lo or self.lo > hi else Outcome.UNDECIDED
 
-    def exceeds(self, other: Estimate) -> Outcome:
-        """Is this value above ``other``'s, judged by the two intervals alone (they may come
-        from the same runs): holds if they are disjoint with this one above."""
-        return (Outcome.HOLDS if self.lo > other.hi else Outcome.CONTRADICTED
-                if self.hi < other.lo else Outcome.UNDECIDED)
-
 
 def _combined(items: Sequence[Estimate], combine: Callable[[list[float]], float]) -> Estimate:
     """Value, lower and upper bound each combined across ``items`` by ``combine``."""
@@ -142,23 +138,6 @@ _NOTHING = Estimate(math.nan, math.nan, math.nan)
 def average(estimates: Iterable[Estimate]) -> Estimate:
     """The mean of estimates with the mean of their bounds: conservative under any correlation."""
     return _combined(list(estimates), lambda xs: float(np.mean(xs)))
-
-
-def change(first: Estimate, last: Estimate) -> Estimate:
-    """``last − first`` with the widest interval its bounds allow: valid under any correlation."""
-    return Estimate(last.value - first.value, last.lo - first.hi, last.hi - first.lo,
-                    first.digits)
-
-
-def spread(estimates: Iterable[Estimate]) -> Estimate:
-    """Largest minus smallest value, with the interval of the largest minus the smallest true
-    value when every interval covers its own (its lower end at least 0)."""
-    items = list(estimates)
-    if _unknown(items):
-        return _NOTHING
-    top, bottom = _combined(items, max), _combined(items, min)
-    return Estimate(top.value - bottom.value, max(top.lo - bottom.hi, 0.0),
-                    top.hi - bottom.lo, items[0].digits)
 
 
 def peak(estimates: Iterable[Estimate]) -> Estimate:

@@ -8,10 +8,13 @@ means; its *influence* on run ``k`` (the first-order term of the delta method) m
 linear combination of measures (a difference, an average over team sizes, a change from one
 team size to another) a mean over runs of per-run *pseudo-values*, whose 95% interval is
 Student's t (:func:`scipy.stats.ttest_1samp`). A difference of two success indicators at one
-pair of points uses only its discordant runs (one succeeds, the other not): McNemar's exact
-conditional test, the Clopper–Pearson interval of the share of discordant runs won by the
-first (:func:`scipy.stats.binomtest`), mapped to the difference. A difference that is zero in
-every run is *tied*: nothing at this setting can separate the two (``Outcome.NOT_TESTABLE``).
+pair of points, ``d = (m/n)(2π − 1)``, is judged on its discordant runs (``m`` of ``n``: one
+succeeds, the other not), of which the first wins a share ``π``: π has the Clopper–Pearson
+interval (:func:`scipy.stats.binomtest`) and ``m/n`` the Wilson interval, each at 97.5% so
+that the interval of ``d`` from their extreme combinations holds at 95% (Bonferroni). Its sign
+is McNemar's exact conditional test at 97.5%; its ends hold also where ``m`` is small. A
+difference that is zero in every run is *tied*: nothing at this setting can separate the two
+(``Outcome.NOT_TESTABLE``).
 A level (one point's measure alone) keeps its Wilson interval, or t for a mean.
 """
 
@@ -79,9 +82,15 @@ class Stat:
             m = first + second
             if m == 0:
                 return Estimate(0.0, 0.0, 0.0, self.digits, tied=True)
-            ci = stats.binomtest(first, m).proportion_ci(level, method="exact")
-            return Estimate(self.value, m / runs * (2 * ci.low - 1), m / runs * (2 * ci.high - 1),
-                            self.digits)
+            # the difference is (m/n)(2π − 1): π, the share of discordant runs the first wins,
+            # has its exact interval, m/n its Wilson interval, each at half the error rate
+            inner = 1 - (1 - level) / 2
+            ci = stats.binomtest(first, m).proportion_ci(inner, method="exact")
+            few, many = (float(b) for b in wilson(m, runs, z=float(stats.norm.ppf(
+                0.5 + inner / 2))))
+            lo, hi = 2 * ci.low - 1, 2 * ci.high - 1
+            return Estimate(self.value, (many if lo < 0 else few) * lo,
+                            (many if hi >= 0 else few) * hi, self.digits)
         if self.counts is not None:
             z = float(stats.norm.ppf(0.5 + level / 2))
             lo, hi = wilson(*self.counts, z=z)
