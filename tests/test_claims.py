@@ -150,6 +150,13 @@ def _rc_rule(values: dict[float, Rule]) -> Rule:
 
 DEFAULT_NOTIFY: Rule = lambda point, u, w: times(0.6, 0.8, 0.95)(point, u, w) + 200.0  # noqa: E731
 """The default world's notification: 200 s after detection."""
+HALF_SLOW: Rule = lambda point, u, w: times(0.6, 0.8, 0.95)(point, u, w) + 2500  # noqa: E731
+"""Notification 2500 s after detection (the runs detected at 3000 s are not notified by
+4000 s)."""
+
+
+def when_point(test: Callable[[tuple[str, int, float]], bool], yes: Rule, no: Rule) -> Rule:
+    return lambda point, u, w: (yes if test(point) else no)(point, u, w)
 
 
 NOISE = level(0.3, 0.2)
@@ -262,6 +269,68 @@ CASES = [
     Case(claims.search_share_dips_in_between,
          world(t_notify=lambda point, u, w: times(0.6, 0.8, 0.95)(point, u, w) * (
              1.0 + (0.5 if point[1] in (2, 22) else 0.0))), CONTRADICTED, "the other way"),
+    Case(claims.search_share_dips_in_between, world(), UNTESTABLE, "flat: alike in every run"),
+    # the abstract's 50 %: mission times of the connectivity schemes at most half
+    Case(claims.connectivity_halves_mission_time,
+         world(t_notify=by_planner({"mtsp": HALF_SLOW, "covb": HALF_SLOW}, DEFAULT_NOTIFY)),
+         HOLDS, "mTSP and CovB notify 2500 s after detection, the rest 200 s"),
+    Case(claims.connectivity_halves_mission_time, world(), CONTRADICTED, "all alike"),
+    # Section 3.3: the hybrids notify at detection more, detect later
+    Case(claims.hybrids_trade_search_for_notification,
+         world(immediate=by_planner({"mtsp-conb": flag(0.8), "concov": flag(0.8)}, flag(0.3)),
+               t_detect=by_planner({"mtsp-conb": times(0.4, 0.8, 0.95),
+                                    "concov": times(0.4, 0.8, 0.95)}, times(0.6, 0.8, 0.95))),
+         HOLDS, "more immediate, less detection at 1000 s"),
+    Case(claims.hybrids_trade_search_for_notification,
+         world(immediate=by_planner({"mtsp-conb": flag(0.1), "concov": flag(0.1)}, flag(0.3))),
+         CONTRADICTED, "less immediate"),
+    Case(claims.hybrids_trade_search_for_notification, world(), UNTESTABLE, "all alike"),
+    # Figs. 2-3: mTSP and CovB notify mostly later at small r_c
+    Case(claims.coverage_notify_later_small_range, world(immediate=flag(0.3)), HOLDS,
+         "30 % at detection"),
+    Case(claims.coverage_notify_later_small_range, world(immediate=flag(0.7)), CONTRADICTED,
+         "70 % at detection"),
+    Case(claims.coverage_notify_later_small_range, world(immediate=flag(0.5, shared=False)),
+         UNDECIDED, "half, runs independent"),
+    # Fig. 5: short t_d, immediate notification highly likely
+    Case(claims.short_td_immediate_likely, world(immediate=flag(0.9)), HOLDS, "0.9"),
+    Case(claims.short_td_immediate_likely, world(immediate=flag(0.3)), CONTRADICTED,
+         "half of the runs detected by 1000 s (u < 0.6)"),
+    Case(claims.short_td_immediate_likely, world(immediate=flag(0.75, shared=False)), UNDECIDED,
+         "0.75, runs independent"),
+    # mTSP-ConB covers every run; ConCov not always
+    Case(claims.mtsp_conb_guarantees_coverage,
+         world(t_detect=by_planner({"mtsp-conb": times(0.5, 0.9, 1.0)},
+                                   times(0.6, 0.8, 0.95))), HOLDS, "ConCov misses 5 %"),
+    Case(claims.mtsp_conb_guarantees_coverage, world(), CONTRADICTED, "mTSP-ConB misses 5 %"),
+    Case(claims.mtsp_conb_guarantees_coverage, world(t_detect=times(0.5, 0.9, 1.0)),
+         HOLDS, "ConCov never misses either: that part is not testable, and decides nothing"),
+    # the hybrids beat both parents somewhere
+    Case(claims.hybrids_beat_both_somewhere,
+         world(t_notify=when_point(lambda p: p[0] in ("concov", "mtsp-conb") and p[1] == 10,
+                                   times(0.9, 0.95, 1.0), times(0.5, 0.7, 0.9))),
+         HOLDS, "ahead of everyone with 10 drones"),
+    Case(claims.hybrids_beat_both_somewhere,
+         world(t_notify=by_planner({"concov": times(0.3, 0.5, 0.7),
+                                    "mtsp-conb": times(0.3, 0.5, 0.7)}, times(0.5, 0.7, 0.9))),
+         CONTRADICTED, "behind everywhere"),
+    Case(claims.hybrids_beat_both_somewhere, world(t_notify=times(0.5, 0.7, 0.9, shared=False)),
+         UNDECIDED, "level, runs independent"),
+    # mTSP's success with delay tolerated
+    Case(claims.mtsp_keeps_success_with_delay,
+         world(t_notify=by_planner({"mtsp": times(0.5, 0.7, 1.0)}, times(0.5, 0.7, 0.9))),
+         HOLDS, "only mTSP always notifies by 4000 s"),
+    Case(claims.mtsp_keeps_success_with_delay,
+         world(t_notify=by_planner({"mtsp": times(0.5, 0.7, 0.8)}, times(0.5, 0.7, 0.9))),
+         CONTRADICTED, "behind"),
+    Case(claims.mtsp_keeps_success_with_delay, world(t_notify=times(0.5, 0.7, 1.0)), UNTESTABLE,
+         "everyone always notifies by 4000 s"),
+    # a point where ConB never notifies has no mission time: undecided, not an error
+    Case(claims.conb_mission_time,
+         world(t_notify=when_point(lambda p: p[0] == "conb" and p[1] == 2, times(0, 0, 0),
+                                   when_point(lambda p: p[0] == "conb", times(0.6, 0.8, 0.95),
+                                              HALF_SLOW))),
+         UNDECIDED, "no ConB run notified with 2 drones"),
 ]
 
 

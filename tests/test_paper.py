@@ -283,8 +283,8 @@ def _main(**rules: Rule) -> dict[str, pd.DataFrame]:
     return {"main": made_up(**rules)}
 
 
-_FAST = {"mtsp": lambda n: 0.2, "covb": lambda n: 0.001, "conb": lambda n: 0.003}
-_HYBRIDS = {"mtsp-conb": lambda n: 0.00025 * n, "concov": lambda n: 0.00025 * n}
+_HYBRIDS = {"mtsp-conb": lambda n: 0.001 + 0.00015 * n, "concov": lambda n: 0.001 + 0.00015 * n}
+_FAST = {"mtsp": lambda n: 0.2, "covb": lambda n: 0.001, "conb": lambda n: 0.003} | _HYBRIDS
 
 CASES = [
     # Fig. 1
