@@ -21,6 +21,7 @@ from sarlink.cli import app
 from sarlink.config import DEFAULT_READING, READINGS, Readings
 from sarlink.paper import ReproductionResult, reproduce
 from sarlink.paper.variants import SYMBOL, variants
+from sarlink.planners import get_planner
 
 FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
@@ -159,9 +160,17 @@ def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult)
     folders = {p.name: sorted(f.name for f in p.iterdir())
                for p in (study.out / "runs" / "miss").iterdir()}
     assert folders["covb"] == folders["mtsp"] == ["any"]
+    presets = {"-".join(r.choices[c] for c in ("conb_check", "contacts", "isolated"))
+               for r in READINGS.values()}  # the report tallies the claims under each preset
     assert folders["conb"] == folders["mtsp-conb"] == sorted(
-        ["period-routed-keep", "continuous-routed-keep", "period-all-keep", "period-routed-home"])
-    assert len(folders["concov"]) == 6  # the reading and each of its five changes
+        {"period-routed-keep", "continuous-routed-keep", "period-all-keep", "period-routed-home"}
+        | presets)
+    reach = [c for c in READINGS["sarlink-1"].choices
+             if c in get_planner("concov").rule.readings]  # type: ignore[union-attr]
+    concov = {"-".join(r.choices[c] for c in reach) for r in READINGS.values()}
+    assert len(folders["concov"]) == len(concov | {"-".join(
+        {**READINGS["sarlink-1"].choices, v.choice: v.value}[c] for c in reach)
+        for v in study.variants if v.choice != "td_fig3"})  # the reading, its changes, presets
 
 
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
