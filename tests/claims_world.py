@@ -69,6 +69,8 @@ class World:
 
     rules: dict[str, Rule] = field(default_factory=dict)
     runs: int = 1000
+    shadowed: dict[str, Rule] = field(default_factory=dict)
+    """Rules of the shadowing sweep (Fig. 7b) where they differ from the main sweep's."""
 
     def _frame(self, points: list[Point], keys: list[str], tds: tuple[float, ...]
                ) -> pd.DataFrame:
@@ -103,14 +105,16 @@ class World:
 
     def shadowing(self, rc: float = 1000.0) -> pd.DataFrame:
         points = list(itertools.product(PAPER_PLANNERS, DRONES, [rc]))
-        return self._frame(points, ["planner", "drones", "rc"], (TD_LONG,))
+        with_shadowing = World(self.rules | self.shadowed, self.runs)
+        return with_shadowing._frame(points, ["planner", "drones", "rc"], (TD_LONG,))
 
     def tables(self) -> dict[str, pd.DataFrame]:
         return {"main_runs": self.main(), "miss_runs": self.miss(),
                 "shadowing_runs": self.shadowing()}
 
 
-def world(**rules: Rule) -> Callable[[], dict[str, pd.DataFrame]]:
-    """The tables of a world with these columns' rules, made when called (so that a test
-    module's cases cost nothing to collect)."""
-    return lambda: World(dict(rules)).tables()
+def world(shadowed: Mapping[str, Rule] | None = None, **rules: Rule
+          ) -> Callable[[], dict[str, pd.DataFrame]]:
+    """The tables of a world with these columns' rules (and ``shadowed``'s in the shadowing
+    sweep), made when called (so that a test module's cases cost nothing to collect)."""
+    return lambda: World(dict(rules), shadowed=dict(shadowed or {})).tables()

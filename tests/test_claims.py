@@ -4,7 +4,7 @@ claim's check on hand-made runs whose answer is known (tests/claims_world.py).""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import numpy as np
@@ -161,6 +161,228 @@ def when_point(test: Callable[[tuple[str, int, float]], bool], yes: Rule, no: Ru
 
 NOISE = level(0.3, 0.2)
 """Reachability around 0.3 with independent noise: no order at any sample size here."""
+
+def _ranged(values: dict[float, Rule]) -> Rule:
+    return lambda point, u, w: values[point[2]](point, u, w)
+
+
+def _sized(make: Callable[[int], Rule]) -> Rule:
+    return lambda point, u, w: make(point[1])(point, u, w)
+
+
+def _after(delay: float | Callable[[int], float], detect: Rule | None = None) -> Rule:
+    """Notification ``delay`` s after detection (a function of N_m, or a number)."""
+    detect = detect or times(0.6, 0.8, 0.95)
+    return lambda point, u, w: detect(point, u, w) + (
+        delay(point[1]) if callable(delay) else delay)
+
+
+def _more_cases() -> list[Case]:
+    coverage, connectivity = ("mtsp", "covb"), ("conb", "concov")
+    low_pd = times(0.4, 0.7, 0.95)
+    fast_pd = times(0.8, 0.9, 0.95)
+
+    def only(planners: Iterable[str], rule: Rule, other: Rule) -> Rule:
+        return by_planner(dict.fromkeys(planners, rule), other)
+
+    cases = [
+        (claims.coverage_searches_faster, world(t_detect=only(coverage, fast_pd, low_pd)),
+         HOLDS, "coverage detects sooner"),
+        (claims.coverage_searches_faster, world(t_detect=only(coverage, low_pd, fast_pd)),
+         CONTRADICTED, "coverage detects later"),
+        (claims.coverage_searches_faster, world(), UNTESTABLE, "alike"),
+        (claims.connectivity_improves_with_drones,
+         world(connected=lambda point, u, w: 0.1 + 0.02 * point[1] + 0 * u,
+               t_notify=_sized(lambda n: times(0.1, 0.2 + 0.02 * n, 0.9))),
+         HOLDS, "both rise with N_m"),
+        (claims.connectivity_improves_with_drones,
+         world(connected=lambda point, u, w: 0.6 - 0.02 * point[1] + 0 * u),
+         CONTRADICTED, "connectivity falls"),
+        (claims.connectivity_improves_with_drones, world(), UNTESTABLE, "flat"),
+        (claims.stringent_connectivity_wins,
+         world(t_notify=only(coverage, HALF_SLOW, DEFAULT_NOTIFY),
+               immediate=only(connectivity, flag(0.9), flag(0.3))), HOLDS, "faster, at once"),
+        (claims.stringent_connectivity_wins, world(), CONTRADICTED, "alike"),
+        (claims.coverage_needs_delay_tolerance,
+         world(t_notify=only(coverage, _after(1000.0), DEFAULT_NOTIFY)), HOLDS,
+         "1000 s against 200 s"),
+        (claims.coverage_needs_delay_tolerance,
+         world(t_notify=only(connectivity, _after(1000.0), DEFAULT_NOTIFY)), CONTRADICTED,
+         "the other way"),
+        (claims.coverage_needs_delay_tolerance, world(), UNTESTABLE, "alike"),
+        (claims.conb_spreads_with_range,
+         world(t_detect=only(["conb"], _ranged({500.0: times(0.3, 0.4, 0.5), 1000.0: times(
+             0.4, 0.5, 0.6), 2000.0: times(0.5, 0.6, 0.7)}), low_pd)), HOLDS, "rises"),
+        (claims.conb_spreads_with_range,
+         world(t_detect=only(["conb"], _ranged({2000.0: times(0.3, 0.4, 0.5), 1000.0: times(
+             0.4, 0.5, 0.6), 500.0: times(0.5, 0.6, 0.7)}), low_pd)), CONTRADICTED, "falls"),
+        (claims.conb_spreads_with_range, world(), UNTESTABLE, "flat"),
+        (claims.mtsp_two_drones, world(t_notify=times(0.5, 0.9, 1.0)), HOLDS, "all by 4000 s"),
+        (claims.mtsp_two_drones, world(), CONTRADICTED, "5 % never"),
+        (claims.density_helps_coverage,
+         world(t_notify=lambda point, u, w: times(0.1, 0.1 + 0.02 * point[1] + (
+             0.1 if point[2] == 2000.0 else 0.0), 0.95)(point, u, w)), HOLDS, "rises"),
+        (claims.density_helps_coverage,
+         world(t_notify=_sized(lambda n: times(0.1, 0.6 - 0.02 * n, 0.95))), CONTRADICTED,
+         "falls with N_m"),
+        (claims.density_helps_coverage, world(), UNTESTABLE, "flat"),
+        (claims.hybrids_beat_conb, world(t_notify=only(["conb"], times(0.3, 0.4, 0.5),
+                                                       DEFAULT_NOTIFY)), HOLDS, "ConB behind"),
+        (claims.hybrids_beat_conb, world(t_notify=only(["conb"], times(0.9, 0.95, 0.99),
+                                                       DEFAULT_NOTIFY)), CONTRADICTED,
+         "ConB ahead"),
+        (claims.hybrids_beat_conb, world(), UNTESTABLE, "alike"),
+        (claims.hybrids_gain_most_at_low_range,
+         world(t_notify=only(["conb"], _ranged({500.0: times(0.1, 0.2, 0.3), 1000.0: times(
+             0.4, 0.6, 0.8), 2000.0: times(0.5, 0.7, 0.9)}), times(0.6, 0.8, 0.95))),
+         HOLDS, "ConB furthest behind at 500 m"),
+        (claims.hybrids_gain_most_at_low_range,
+         world(t_notify=only(["conb"], _ranged({2000.0: times(0.1, 0.2, 0.3), 1000.0: times(
+             0.4, 0.6, 0.8), 500.0: times(0.5, 0.7, 0.9)}), times(0.6, 0.8, 0.95))),
+         CONTRADICTED, "furthest behind at 2000 m"),
+        (claims.hybrids_gain_most_at_low_range, world(), UNTESTABLE, "alike"),
+        (claims.concov_spreads_and_connects,
+         world(connected=only(["concov"], level(0.8), level(0.5)),
+               t_detect=only(["conb"], times(0.3, 0.4, 0.5), times(0.6, 0.8, 0.95))),
+         HOLDS, "connected and spread"),
+        (claims.concov_spreads_and_connects, world(connected=only(["concov"], level(0.2),
+                                                                  level(0.5))),
+         CONTRADICTED, "less connected"),
+        (claims.concov_spreads_and_connects, world(), UNTESTABLE, "alike"),
+        (claims.mission_times_converge,
+         world(t_notify=only(["conb"], DEFAULT_NOTIFY, _after(lambda n: 200.0 + 40 * (22 - n)))),
+         HOLDS, "800 s apart with 2 drones, together with 22"),
+        (claims.mission_times_converge,
+         world(t_notify=only(["conb"], DEFAULT_NOTIFY, _after(lambda n: 200.0 + 40 * (n - 2)))),
+         CONTRADICTED, "apart with 22"),
+        (claims.mission_times_converge, world(), UNTESTABLE, "together"),
+        (claims.hybrid_times_above_conb,
+         world(t_notify=only(["conb"], times(0.6, 0.8, 0.95), DEFAULT_NOTIFY)), HOLDS,
+         "200 s longer"),
+        (claims.hybrid_times_above_conb, world(t_notify=only(["conb"], _after(600.0),
+                                                             DEFAULT_NOTIFY)),
+         CONTRADICTED, "shorter"),
+        (claims.hybrid_times_above_conb, world(), UNTESTABLE, "alike"),
+        (claims.concov_notification_share,
+         world(t_notify=by_planner({"concov": scaled(1 / 0.7), "mtsp": scaled(1 / 0.55),
+                                    "covb": scaled(1 / 0.55)}, DEFAULT_NOTIFY)),
+         HOLDS, "30 % and 45 %"),
+        (claims.concov_notification_share, world(), CONTRADICTED, "15 % for all"),
+        (claims.mission_time_falls, world(t_notify=_after(lambda n: 200.0 + 40 * (22 - n))),
+         HOLDS, "40 s less per drone"),
+        (claims.mission_time_falls, world(t_notify=_after(lambda n: 200.0 + 40 * n)),
+         CONTRADICTED, "rises"),
+        (claims.mission_time_falls, world(), UNTESTABLE, "flat"),
+        (claims.detection_phase_has_a_minimum,
+         world(t_notify=lambda point, u, w: scaled(1.0 if point[1] in (2, 22) else 1.5)(
+             point, u, w)), HOLDS, "search share lowest in between"),
+        (claims.detection_phase_has_a_minimum,
+         world(t_notify=lambda point, u, w: scaled(1.5 if point[1] in (2, 22) else 1.0)(
+             point, u, w)), CONTRADICTED, "highest in between"),
+        (claims.fig4_trends_at_shorter_td, world(), CONTRADICTED,
+         "ConB's mission time equal to the others'"),
+        (claims.best_scheme_depends_on_priority,
+         world(t_notify=only(["mtsp"], times(0.6, 0.8, 1.0), times(0.6, 0.8, 0.9)),
+               immediate=only(["conb"], flag(0.9), flag(0.5))), HOLDS,
+         "mTSP best at success, ConB at once"),
+        (claims.best_scheme_depends_on_priority, world(), CONTRADICTED, "one planner best at both"),
+        (claims.notification_more_critical_later, world(), HOLDS,
+         "immediate if u < 0.5: 0.83 of the detections by 1000 s, 0.53 by 4000 s"),
+        (claims.notification_more_critical_later,
+         world(immediate=lambda point, u, w: u > 0.5), CONTRADICTED, "the late ones immediate"),
+        (claims.conb_immediate_highest,
+         world(immediate=only(["conb"], flag(0.9), flag(0.3)),
+               t_detect=only(["conb"], times(0.3, 0.4, 0.5), times(0.6, 0.8, 0.95)),
+               t_notify=only(["conb"], times(0.3, 0.4, 0.5), DEFAULT_NOTIFY)),
+         HOLDS, "ConB at once, detecting less"),
+        (claims.conb_immediate_highest, world(immediate=only(["conb"], flag(0.1), flag(0.3))),
+         CONTRADICTED, "ConB least at once"),
+        (claims.conb_immediate_highest, world(), UNTESTABLE, "alike"),
+        (claims.concov_follows_conb, world(immediate=only(["concov"], flag(0.8), flag(0.3))),
+         HOLDS, "ConCov ahead"),
+        (claims.concov_follows_conb, world(immediate=only(["concov"], flag(0.1), flag(0.3))),
+         CONTRADICTED, "ConCov behind"),
+        (claims.concov_follows_conb, world(), UNTESTABLE, "alike"),
+        (claims.low_reachability_small_range, world(reach=level(0.1)), HOLDS, "0.1"),
+        (claims.low_reachability_small_range, world(reach=level(0.5)), CONTRADICTED, "0.5"),
+        (claims.conb_reachability_best, world(reach=only(["conb"], level(0.5), level(0.3))),
+         HOLDS, "ConB highest"),
+        (claims.conb_reachability_best, world(reach=only(["conb"], level(0.1), level(0.3))),
+         CONTRADICTED, "ConB lowest"),
+        (claims.conb_reachability_best, world(reach=NOISE), UNDECIDED, "noise"),
+        (claims.conb_reachability_best, world(), UNTESTABLE, "alike"),
+        (claims.coverage_overtakes_conb,
+         world(reach=only(("covb", "concov"), _sized(lambda n: level(0.1 + 0.02 * n)),
+                          level(0.3))), HOLDS, "from behind to ahead"),
+        (claims.coverage_overtakes_conb, world(reach=only(("covb", "concov"), level(0.1),
+                                                          level(0.3))), CONTRADICTED, "behind"),
+        (claims.coverage_overtakes_conb, world(), UNTESTABLE, "alike"),
+        (claims.ideal_detection, world(t_detect=times(0.95, 0.99, 0.99)), HOLDS, "0.95"),
+        (claims.ideal_detection, world(), CONTRADICTED, "0.6"),
+        (claims.ideal_detection, world(t_detect=times(0.9, 0.99, 0.99, shared=False)), UNDECIDED,
+         "0.9, at the threshold"),
+        (claims.detection_falls_with_miss,
+         world(t_detect=_sized(lambda q: times(1 - 0.5 * q, 1, 1))), HOLDS, "falls"),
+        (claims.detection_falls_with_miss,
+         world(t_detect=_sized(lambda q: times(0.5 + 0.5 * q, 1, 1))), CONTRADICTED, "rises"),
+        (claims.detection_falls_with_miss, world(), UNTESTABLE, "flat"),
+        (claims.detection_robust_to_small_miss,
+         world(t_detect=_sized(lambda q: times(1 - 0.2 * q, 1, 1))), HOLDS, "0.04 lower at 0.2"),
+        (claims.detection_robust_to_small_miss,
+         world(t_detect=_sized(lambda q: times(1 - q, 1, 1))), CONTRADICTED, "0.2 lower at 0.2"),
+        (claims.detection_robust_to_small_miss, world(), UNTESTABLE, "flat"),
+        (claims.shadowing_keeps_trends, world(immediate=ORDERED), HOLDS, "the same order"),
+        (claims.shadowing_keeps_trends,
+         world(immediate=ORDERED, shadowed={"immediate": by_planner(
+             {"mtsp": flag(0.95), "conb": flag(0.2)}, ORDERED)}), CONTRADICTED,
+         "mTSP first, ConB last"),
+        (claims.shadowing_keeps_trends, world(), UNTESTABLE, "no order"),
+        (claims.shadowing_helps_mtsp_slightly,
+         world(shadowed={"immediate": only(("mtsp", "mtsp-conb"), flag(0.55), flag(0.5))}),
+         HOLDS, "+0.05"),
+        (claims.shadowing_helps_mtsp_slightly,
+         world(shadowed={"immediate": only(("mtsp", "mtsp-conb"), flag(0.8), flag(0.5))}),
+         CONTRADICTED, "+0.3"),
+        (claims.shadowing_helps_mtsp_slightly, world(), UNTESTABLE, "no change"),
+        (claims.stringent_resources_matter_most,
+         world(t_notify=lambda point, u, w: (HALF_SLOW if point[0] == "mtsp" and point[2] == 500.0
+                                             else DEFAULT_NOTIFY)(point, u, w)),
+         HOLDS, "mTSP slow at 500 m only"),
+        (claims.stringent_resources_matter_most,
+         world(t_notify=lambda point, u, w: (HALF_SLOW if point[0] == "mtsp" and point[2] == 2000.0
+                                             else DEFAULT_NOTIFY)(point, u, w)),
+         CONTRADICTED, "mTSP slow at 2000 m only"),
+        (claims.stringent_resources_matter_most, world(), UNTESTABLE, "alike"),
+        (claims.connectivity_aware_tradeoff,
+         world(immediate=only(connectivity, flag(0.9), flag(0.3)),
+               reach=only(connectivity, level(0.5), level(0.3)),
+               t_detect=only(connectivity, low_pd, fast_pd),
+               t_notify=only(connectivity, low_pd, _after(200.0, fast_pd))),
+         HOLDS, "at once, reachable, slower"),
+        (claims.connectivity_aware_tradeoff,
+         world(immediate=only(connectivity, flag(0.1), flag(0.3))), CONTRADICTED, "less at once"),
+        (claims.connectivity_aware_tradeoff, world(), UNTESTABLE, "alike"),
+        (claims.mtsp_fast_but_delayed,
+         world(t_detect=only(("mtsp", "mtsp-conb"), fast_pd, low_pd),
+               t_notify=only(("mtsp", "mtsp-conb"), _after(1000.0, fast_pd),
+                             _after(200.0, low_pd))), HOLDS, "sooner, later told"),
+        (claims.mtsp_fast_but_delayed, world(t_detect=only(("mtsp", "mtsp-conb"), low_pd,
+                                                           fast_pd)),
+         CONTRADICTED, "detect later"),
+        (claims.mtsp_fast_but_delayed, world(), UNTESTABLE, "alike"),
+    ]
+    return [Case(*c) for c in cases]
+
+
+ORDERED = by_planner({"conb": flag(0.9), "concov": flag(0.7), "covb": flag(0.5),
+                      "mtsp-conb": flag(0.4)}, flag(0.3))
+"""Immediate notification in Fig. 5's order: ConB, ConCov, CovB, mTSP-ConB, mTSP."""
+
+
+def scaled(k: float) -> Rule:
+    """Notification at ``k`` times the detection time (a notification share of 1 − 1/k)."""
+    return lambda point, u, w: times(0.6, 0.8, 0.95)(point, u, w) * k
+
 
 CASES = [
     # "as r_c becomes larger ... approaches 1": a trend, tied at 1 is not testable
@@ -331,6 +553,7 @@ CASES = [
                                    when_point(lambda p: p[0] == "conb", times(0.6, 0.8, 0.95),
                                               HALF_SLOW))),
          UNDECIDED, "no ConB run notified with 2 drones"),
+    *_more_cases(),
 ]
 
 
