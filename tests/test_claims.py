@@ -279,6 +279,10 @@ def _more_cases() -> list[Case]:
         (claims.detection_phase_has_a_minimum,
          world(t_notify=lambda point, u, w: scaled(1.5 if point[1] in (2, 22) else 1.0)(
              point, u, w)), CONTRADICTED, "highest in between"),
+        (claims.conb_mission_time,
+         world(t_notify=only(["conb"], times(0.6, 0.8, 0.95), HALF_SLOW)), HOLDS,
+         "ConB notifies at detection, the others 2500 s later"),
+        (claims.conb_mission_time, world(), CONTRADICTED, "alike"),
         (claims.fig4_trends_at_shorter_td, world(), CONTRADICTED,
          "ConB's mission time equal to the others'"),
         (claims.best_scheme_depends_on_priority,
