@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -640,3 +641,10 @@ def test_a_verdict_with_only_untestable_parts_is_not_testable() -> None:
     v.test(UNTESTABLE, "x")
     assert worst(p.outcome for p in v.parts) is UNTESTABLE
 
+
+
+def test_docs_list_every_claim_with_its_sentence_and_criterion() -> None:
+    docs = (Path(__file__).resolve().parent.parent / "docs" / "reproduce.md").read_text()
+    for c in CLAIMS:
+        assert f"“{c.sentence}” ({c.section})" in docs, c.name
+        assert c.criterion.replace("|", "\\|") in docs, c.name
