@@ -11,7 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sarlink import Mission, simulate
-from sarlink.metrics import success_curve, summarize, varying_params, wilson
+from sarlink.metrics import run_values, success_curve, summarize, varying_params, wilson
 
 
 def made_up() -> pd.DataFrame:
@@ -171,6 +171,26 @@ def test_success_never_decreases_in_td(notify: list[float], tds: list[float]) ->
     assert np.all((curve.P_s_lo <= curve.P_s) & (curve.P_s <= curve.P_s_hi))
     expected = [np.sum(np.asarray(notify) <= td) / len(notify) for td in sorted(tds)]
     assert curve.P_s.tolist() == pytest.approx(expected)
+
+
+def test_run_values_are_each_runs_own_as_the_engine_reports_them() -> None:
+    """The per-run table of the paired statistics: event times, immediate notification and
+    the reachability and connectivity read at each t_d as RunResult reads them."""
+    mission = Mission.build(drones=5, rc=1000.0, horizon=420.0)
+    results = [simulate(mission, seed=3, run=k) for k in range(6)]
+    df = pd.DataFrame([r.row() for r in results]).assign(horizon=420.0, checkpoint=50.0,
+                                                         planner="covb")
+    for column in ("reach_cum", "connected_cum"):
+        df[column] = df[column].map(np.asarray)
+    out = run_values(df, [37.0, 420.0], ["planner"]).set_index("run")
+    for r in results:
+        row = out.loc[r.run]
+        assert row["t_detect"] == pytest.approx(r.t_detect if r.t_detect is not None
+                                                else math.nan, nan_ok=True)
+        assert bool(row["immediate"]) == r.immediate
+        for td in (37.0, 420.0):
+            assert row[f"reach@{td:g}"] == pytest.approx(r.t_reachable(td) / td)
+            assert row[f"connected@{td:g}"] == pytest.approx(r.connected_fraction(td))
 
 
 def test_runs_stopped_at_notification_keep_the_event_measures_and_lose_reachability() -> None:

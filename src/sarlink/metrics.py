@@ -24,8 +24,8 @@ import pandas as pd
 
 from sarlink.config import param_groups
 
-__all__ = ["MEASURES", "Z95", "Measure", "format_interval", "format_mean", "success_curve",
-           "summarize", "varying_params", "wilson"]
+__all__ = ["MEASURES", "Z95", "Measure", "format_interval", "format_mean", "run_values",
+           "success_curve", "summarize", "varying_params", "wilson"]
 
 Z95 = 1.959963984540054
 """The standard normal quantile of 0.975: two-sided 95% intervals."""
@@ -298,3 +298,28 @@ def success_curve(df: pd.DataFrame, tds: Sequence[float] | np.ndarray,
     })
     return pd.concat([keys.loc[keys.index.repeat(len(tds))].reset_index(drop=True), curve],
                      axis=1)
+
+
+def run_values(df: pd.DataFrame, tds: Sequence[float], by: Sequence[str]) -> pd.DataFrame:
+    """Every run's own values, for statistics that pair runs across grid points.
+
+    Runs of one seed share their target by ``run`` (common random numbers), so a comparison of
+    two grid points is sharper run by run than from two summaries. One row per run: the
+    columns ``by``, ``run``, ``t_detect``, ``t_notify`` (NaN if it did not happen),
+    ``immediate``, and for each ``td`` the fraction of ``[0, t_d]`` the target was reachable
+    (``reach@<td>``) and the mean fraction of drones connected (``connected@<td>``), read as
+    :func:`summarize` reads them. Runs without those records (stopped at an event) get NaN.
+    """
+    out = df[[*by, "run"]].reset_index(drop=True)
+    for column in ("t_detect", "t_notify"):
+        out[column] = df[column].to_numpy(dtype=float)
+    out["immediate"] = df["immediate"].to_numpy(dtype=bool)
+    horizon = df["horizon"].to_numpy(dtype=float)
+    for td in tds:
+        for name, column in (("reach", "reach_cum"), ("connected", "connected_cum")):
+            if column in df and df[column].notna().all() and td <= horizon.min():
+                values = _cum_at(df, column, np.full(len(df), float(td))) / td
+            else:
+                values = np.full(len(df), np.nan)
+            out[f"{name}@{td:g}"] = values
+    return out

@@ -63,9 +63,11 @@ def reproduce(
                                   reading=reading, sensitivity_analysis=sensitivity)
     findings = (f"{len(result.findings)} of the paper's claims checked: "
                 f"{tally(result.findings)}" if result.findings else "no claims checked")
+    others = "".join(f"; under {name}: {tally(found)}" for name, found in result.presets.items()
+                     if name != result.reading and found)
     changes = (f"; {len(result.variants)} single changes of the reading decided too"
                if result.variants else "")
     console.print(f"report: {result.report_html} and {result.report_md} "
                   f"({result.runs} runs per point, reading {result.reading!r}, "
-                  f"{result.seconds:.0f} s); {findings}{changes}",
+                  f"{result.seconds:.0f} s); {findings}{others}{changes}",
                   highlight=False, soft_wrap=True)

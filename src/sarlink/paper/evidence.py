@@ -1,21 +1,23 @@
-"""The evidence a claim is decided on: estimates with 95% intervals and three-way outcomes.
+"""The evidence a claim is decided on: estimates with 95% intervals and four outcomes.
 
-The statistics are deliberately conservative, so that a claim *holds* only where the
-intervals support it and is *contradicted* only where they exclude it; in between it is
-*undecided at this sample size*, which more runs per point can settle:
+A part of a claim *holds* only where its interval supports it and is *contradicted* only where
+the interval excludes it; in between it is *undecided at this sample size*, which more runs
+per point can settle; and it is *not testable at this setting* where what it compares is equal
+in every run (:attr:`Estimate.tied`), which no number of runs can settle.
 
 - An *estimate* is a value with a 95% interval: the Wilson interval of a probability, or
-  mean ± 1.96 standard errors of a mean (:meth:`sarlink.metrics.Measure.interval`).
-- A *difference* of two estimates has Newcombe's hybrid score interval
+  mean ± 1.96 standard errors of a mean (:meth:`sarlink.metrics.Measure.interval`). The
+  claims' comparisons are paired (:mod:`sarlink.paper.paired`); the unpaired tools here serve
+  summary tables alone (beyond the paper, :mod:`sarlink.paper.beyond`) and Fig. 1's timings.
+- A *difference* of two independent estimates has Newcombe's hybrid score interval
   ``d − √((a − a_lo)² + (b_hi − b)²) .. d + √((a_hi − a)² + (b − b_lo)²)`` (for means it is
-  ``d ± 1.96 √(se_a² + se_b²)``). It treats the two grid points as independent; with common
-  random numbers their runs search for the same targets and are positively correlated, so the
-  interval is wider than a paired one: conservative.
-- An *average over team sizes* of estimates averages their bounds too. The half-width of a sum
-  is at most the sum of half-widths whatever the correlations (Minkowski), so this interval is
-  conservative as well. A *change* from one estimate to another, and the *spread* of several,
-  take the extreme combinations of their bounds, valid under any correlation too.
-- A claim of several parts is contradicted if any part is, and holds only if every part does.
+  ``d ± 1.96 √(se_a² + se_b²)``).
+- An *average* of estimates averages their bounds too. The half-width of a sum is at most the
+  sum of half-widths whatever the correlations (Minkowski), so this interval is conservative;
+  a *peak* takes the largest of each bound, the interval of the largest true value when every
+  interval covers its own.
+- A claim of several parts is contradicted if any part is, undecided if any part is, and
+  holds if a part holds; parts not testable decide nothing unless every part is.
 """
 
 from __future__ import annotations
@@ -34,7 +36,7 @@ from sarlink.metrics import MEASURES, format_interval
 from sarlink.paper.experiments import DRONES
 
 __all__ = ["Estimate", "Grid", "Outcome", "Part", "PlanTimes", "SummaryTables", "Verdict",
-           "average", "change", "peak", "spread", "worst"]
+           "average", "peak", "worst"]
 
 
 class Outcome(enum.Enum):
@@ -43,17 +45,23 @@ class Outcome(enum.Enum):
     HOLDS = "holds"
     CONTRADICTED = "contradicted"
     UNDECIDED = "undecided at this sample size"
+    NOT_TESTABLE = "not testable at this setting"
+    """Nothing at this setting can separate what is compared: two planners that fly alike on
+    every run (both notify in every run, say). More runs cannot settle it; another setting
+    can."""
 
 
 def worst(outcomes: Iterable[Outcome]) -> Outcome:
-    """The outcome of parts together: contradicted if any is, holds only if all do."""
+    """The outcome of parts together: contradicted if any is, otherwise undecided if any is,
+    otherwise holds if any does; parts not testable at their setting decide nothing, and a
+    claim none of whose parts can be tested is not testable."""
     found = set(outcomes)
     if not found:
         raise ValueError("a claim needs at least one tested part")
-    for outcome in (Outcome.CONTRADICTED, Outcome.UNDECIDED):
+    for outcome in (Outcome.CONTRADICTED, Outcome.UNDECIDED, Outcome.HOLDS):
         if outcome in found:
             return outcome
-    return Outcome.HOLDS
+    return Outcome.NOT_TESTABLE
 
 
 @dataclass(frozen=True)
@@ -65,9 +73,13 @@ class Estimate:
     hi: float
     digits: int = 3
     """Decimals when printed."""
+    tied: bool = False
+    """A paired difference that is zero in every run: nothing here can separate the two, so
+    every comparison with it is not testable at this setting."""
 
     def __str__(self) -> str:
-        return format_interval(self.value, self.lo, self.hi, self.digits)
+        text = format_interval(self.value, self.lo, self.hi, self.digits)
+        return text + " (equal in every run)" if self.tied else text
 
     def scaled(self, k: float) -> Estimate:
         """``k`` times the estimate, ``k`` ≥ 0."""
@@ -86,26 +98,26 @@ class Estimate:
 
     def above(self, x: float = 0.0) -> Outcome:
         """Is the value above ``x``: holds if the interval is, contradicted if it lies below."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         return (Outcome.HOLDS if self.lo > x else Outcome.CONTRADICTED if self.hi < x
                 else Outcome.UNDECIDED)
 
     def below(self, x: float = 0.0) -> Outcome:
         """Is the value below ``x``: holds if the interval is, contradicted if it lies above."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         return (Outcome.HOLDS if self.hi < x else Outcome.CONTRADICTED if self.lo > x
                 else Outcome.UNDECIDED)
 
     def within(self, lo: float, hi: float) -> Outcome:
         """Is the value within ``[lo, hi]``: holds if the whole interval is, contradicted if
         the interval misses it."""
+        if self.tied:
+            return Outcome.NOT_TESTABLE
         if lo <= self.lo and self.hi <= hi:
             return Outcome.HOLDS
         return Outcome.CONTRADICTED if self.hi < lo or self.lo > hi else Outcome.UNDECIDED
-
-    def exceeds(self, other: Estimate) -> Outcome:
-        """Is this value above ``other``'s, judged by the two intervals alone (they may come
-        from the same runs): holds if they are disjoint with this one above."""
-        return (Outcome.HOLDS if self.lo > other.hi else Outcome.CONTRADICTED
-                if self.hi < other.lo else Outcome.UNDECIDED)
 
 
 def _combined(items: Sequence[Estimate], combine: Callable[[list[float]], float]) -> Estimate:
@@ -126,23 +138,6 @@ _NOTHING = Estimate(math.nan, math.nan, math.nan)
 def average(estimates: Iterable[Estimate]) -> Estimate:
     """The mean of estimates with the mean of their bounds: conservative under any correlation."""
     return _combined(list(estimates), lambda xs: float(np.mean(xs)))
-
-
-def change(first: Estimate, last: Estimate) -> Estimate:
-    """``last − first`` with the widest interval its bounds allow: valid under any correlation."""
-    return Estimate(last.value - first.value, last.lo - first.hi, last.hi - first.lo,
-                    first.digits)
-
-
-def spread(estimates: Iterable[Estimate]) -> Estimate:
-    """Largest minus smallest value, with the interval of the largest minus the smallest true
-    value when every interval covers its own (its lower end at least 0)."""
-    items = list(estimates)
-    if _unknown(items):
-        return _NOTHING
-    top, bottom = _combined(items, max), _combined(items, min)
-    return Estimate(top.value - bottom.value, max(top.lo - bottom.hi, 0.0),
-                    top.hi - bottom.lo, items[0].digits)
 
 
 def peak(estimates: Iterable[Estimate]) -> Estimate:

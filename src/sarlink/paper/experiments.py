@@ -26,7 +26,8 @@ import numpy as np
 import pandas as pd
 
 from sarlink.config import Experiment, Mission
-from sarlink.metrics import success_curve, summarize
+from sarlink.metrics import run_values, success_curve, summarize
+from sarlink.mtsp import plan_for
 from sarlink.planners import PAPER_PLANNERS, planner_names
 from sarlink.ranges import range_curve
 
@@ -54,6 +55,7 @@ __all__ = [
     "TD_LONG",
     "TD_SHORT",
     "PaperExperiment",
+    "mtsp_plans",
     "other_planners",
     "plan_time_missions",
 ]
@@ -96,8 +98,9 @@ P_MISS = tuple(round(0.1 * k, 1) for k in range(10))
 SIGMA = 3.0
 """Shadowing standard deviation of Fig. 7b, dB (the paper's, after Yang et al.)."""
 """The paper's planners, in the order of its legends: the planners of its figures and claims."""
-PLAN_TIME_PLANNERS = ("mtsp", "covb", "conb")
-"""The native planners whose plan computation time Fig. 1 compares."""
+PLAN_TIME_PLANNERS = ("mtsp", "covb", "conb", "mtsp-conb", "concov")
+"""The planners whose plan computation time Fig. 1 shows: the paper's natives, and the hybrids,
+whose times Section 4.2 predicts without showing them."""
 
 _BY = ["planner", "drones", "rc"]
 
@@ -135,7 +138,22 @@ def _range_table(runs: pd.DataFrame) -> pd.DataFrame:
 def _main_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
     return {"main": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=_BY),
             "curve": success_curve(runs, CURVE_TDS, by=_BY),
-            "range_curve": _range_table(runs)}
+            "range_curve": _range_table(runs),
+            "main_runs": run_values(runs, [TD_SHORT, TD_FIG3, TD_LONG], _BY),
+            "mtsp_plans": mtsp_plans()}
+
+
+def mtsp_plans() -> pd.DataFrame:
+    """The mTSP plan the main sweep flies at each team size (cached): its cells, and the
+    flight time of its longest tour beside the flight budget (Section 4.1's claims)."""
+    rows = []
+    for n in DRONES:
+        mission = Mission.build(planner="mtsp", drones=n, horizon=TD_LONG)
+        plan = plan_for(mission, n)
+        rows.append({"drones": n, "cells": len(plan.points),
+                     "longest_s": plan.longest / mission.team.speed,
+                     "flight_time": mission.team.flight_time})
+    return pd.DataFrame(rows)
 
 
 def _miss(runs: int) -> Experiment:
@@ -147,7 +165,8 @@ def _miss(runs: int) -> Experiment:
 
 
 def _miss_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
-    return {"miss": summarize(runs, td=TD_SHORT, by=["planner", "drones", "rc", "p_miss"])}
+    return {"miss": summarize(runs, td=TD_SHORT, by=["planner", "drones", "rc", "p_miss"]),
+            "miss_runs": run_values(runs, [TD_SHORT], ["planner", "p_miss"])}
 
 
 def _shadowing(runs: int) -> Experiment:
@@ -159,7 +178,8 @@ def _shadowing(runs: int) -> Experiment:
 
 
 def _shadowing_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
-    return {"shadowing": summarize(runs, td=TD_LONG, by=[*_BY, "sigma"])}
+    return {"shadowing": summarize(runs, td=TD_LONG, by=[*_BY, "sigma"]),
+            "shadowing_runs": run_values(runs, [TD_LONG], _BY)}
 
 
 def _report(runs: int) -> Experiment:
@@ -212,8 +232,9 @@ EXPERIMENTS = {e.name: e for e in (
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
-:data:`CURVE_TDS`) and ``range_curve`` (:func:`sarlink.ranges.range_curve`); ``others``
-the table ``others``, by ``on_detect`` too."""
+:data:`CURVE_TDS`), ``range_curve`` (:func:`sarlink.ranges.range_curve`) and ``main_runs``
+(every run's values, ``run_values``, for the paired statistics of the claims; ``miss`` and
+``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from sarlink.config import DEFAULT_READING, Mission, Reading, get_reading
+from sarlink.config import DEFAULT_READING, READINGS, Mission, Reading, get_reading
 from sarlink.paper.beyond import beyond_text, others_text
 from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import (
@@ -190,12 +190,26 @@ def _sensitivity(study: Sensitivity | None) -> list[_Block]:
 
 
 _CSS_CLASS = {Outcome.HOLDS: "holds", Outcome.CONTRADICTED: "fails",
-              Outcome.UNDECIDED: "undecided"}
+              Outcome.UNDECIDED: "undecided", Outcome.NOT_TESTABLE: "untestable"}
+
+
+def _presets(findings: Sequence[Finding], reading: Reading,
+             presets: dict[str, list[Finding]] | None) -> list[_Block]:
+    """The tally under every preset reading: its range, not one chosen number."""
+    by_name = presets or {reading.name: list(findings)}
+    rows = [(name + (" (this report)" if name == reading.name else ""),
+             READINGS[name].about if name in READINGS else "", tally(found))
+            for name, found in by_name.items()]
+    return [_Para(f"The tally under every preset reading ({len(rows)}; each runs every "
+                  "experiment with its own choices; docs/model.md, Readings):"),
+            _Table(pd.DataFrame(rows, columns=["reading", "what it follows", "claims"]))]
 
 
 def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
-            reading: Reading) -> list[_Block]:
-    """The paper's claims grouped by figure, each with its outcome, criterion and numbers."""
+            reading: Reading, presets: dict[str, list[Finding]] | None = None
+            ) -> list[_Block]:
+    """The paper's claims grouped by figure, each with its sentence, outcome, criterion and
+    numbers."""
     unchecked = [c for c in CLAIMS if not c.checkable(tables)]
     blocks: list[_Block] = [_Heading("The paper's claims", 2)]
     if not findings:
@@ -206,23 +220,32 @@ def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
               + (f" Not checked, for want of the runs of their figures: "
                  f"{len(unchecked)} ({', '.join(sorted({c.figure for c in unchecked}))})."
                  if unchecked else "")),
-        _Para("Each claim is decided from the summary tables by the criterion quoted with it. "
-              "All intervals are 95% (Wilson for probabilities, ± 1.96 standard errors for "
-              "means, Newcombe for differences, averages over team sizes with averaged "
-              "bounds, Welch and least-squares t intervals for plan times), and every "
-              "comparison is conservative: a claim holds where the intervals support every "
-              "part of it, is contradicted where they exclude a part, and is otherwise "
-              "undecided at this sample size (more runs per point can settle it). "
+        *_presets(findings, reading, presets),
+        _Para("Each claim quotes the paper's sentence and is decided from the runs by the "
+              "criterion quoted with it. All intervals are 95%. Comparisons are paired: run k "
+              "of every grid point searches for the same target, so a difference is judged "
+              "run by run (McNemar's exact test on the discordant runs for two success "
+              "indicators, Student's t on per-run pseudo-values otherwise); a level has its "
+              "Wilson interval; plan times have Welch and least-squares t intervals. A part "
+              "holds where its interval supports it, is contradicted where the interval "
+              "excludes it, is undecided at this sample size otherwise (more runs can settle "
+              "it), and is not testable at this setting where the two compared are equal in "
+              "every run (both always succeed, say). A claim is contradicted if a part is, "
+              "undecided if a part is, holds if a part holds and none is contradicted or "
+              "undecided; parts not testable decide nothing. Where the sentence names no team "
+              "size, a comparison is decided on its average over N_m and shows the picture "
+              "per N_m beside it (+ holds, − contradicted, ? undecided, = not testable). "
               f"Fig. 3's t_d, which the paper does not state, is taken as "
               f"{reading.td_fig3:g} s (reading {reading.name!r})."),
         _Table(pd.DataFrame([(f.figure, f.claim, f.outcome.value) for f in findings],
-                            columns=["figure", "claim", "outcome"])),
+                            columns=["about", "claim", "outcome"])),
     ]
     for figure in dict.fromkeys(f.figure for f in findings):
         blocks.append(_Heading(figure, 3))
         for f in (f for f in findings if f.figure == figure):
             blocks += [
                 _Heading(f"{f.claim} — {f.outcome.value}", 4, _CSS_CLASS[f.outcome]),
+                _Para(f"The paper, {f.section}: “{f.sentence}”"),
                 _Para("Criterion: " + f.criterion),
                 _List([f"{p.text} — {p.outcome.value}" for p in f.parts]),
             ]
@@ -292,14 +315,15 @@ def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
 def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
               tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
               reading: Reading, stages: Sequence[Stage], seconds: float, workers: str,
-              replay: ReplayLink | None, sensitivity: Sensitivity | None) -> list[_Block]:
+              replay: ReplayLink | None, sensitivity: Sensitivity | None,
+              presets: dict[str, list[Finding]] | None) -> list[_Block]:
     intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
              "\"Connectivity considerations for mission planning of a search and rescue drone "
              f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
              f"{runs} runs per grid point, under the reading {reading.name!r} of what the paper "
              "leaves open (docs/model.md, Readings).")
     return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
-            *_claims(findings, tables, reading), *_sensitivity(sensitivity),
+            *_claims(findings, tables, reading, presets), *_sensitivity(sensitivity),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
             *_beyond(tables), *_others(tables), *_figures(out, figures, tables),
@@ -349,6 +373,7 @@ th { background: #f3f3f3; } tr:nth-child(even) td { background: #fafafa; }
 img { max-width: 100%; } figcaption { font-style: italic; margin-bottom: 1em; }
 details { margin: .5em 0 1.2em; } summary { cursor: pointer; color: #245; }
 .holds { color: #176617; } .fails { color: #a32020; } .undecided { color: #7a5a00; }
+.untestable { color: #555; }
 """
 
 
@@ -392,19 +417,20 @@ def write_report(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
                  tables: dict[str, pd.DataFrame], findings: Sequence[Finding],
                  stages: Sequence[Stage], seconds: float, workers: str,
                  reading: Reading | None = None, replay: ReplayLink | None = None,
-                 sensitivity: Sensitivity | None = None) -> tuple[Path, Path]:
+                 sensitivity: Sensitivity | None = None,
+                 presets: dict[str, list[Finding]] | None = None) -> tuple[Path, Path]:
     """Write ``out/report.md`` and ``out/report.html``; return their paths.
 
     ``figures`` maps figure numbers to their PNG files inside ``out``; ``tables`` holds the
     summary tables the figures were drawn from and ``findings`` the claims checked on them,
     under ``reading`` (default: the default reading); ``workers`` says what ran the
     simulations; ``replay`` is a replay page inside ``out`` to link; ``sensitivity`` what the
-    claims depend on.
+    claims depend on; ``presets`` the claims under every preset reading, by name.
     """
     blocks = _document(out, runs=runs, quick=quick, figures=figures, tables=tables,
                        findings=findings, reading=reading or get_reading(DEFAULT_READING),
                        stages=stages, seconds=seconds, workers=workers, replay=replay,
-                       sensitivity=sensitivity)
+                       sensitivity=sensitivity, presets=presets)
     md, page = out / "report.md", out / "report.html"
     md.write_text(_markdown(blocks), encoding="utf-8")
     page.write_text(_html(blocks, out), encoding="utf-8")

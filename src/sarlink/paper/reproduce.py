@@ -8,8 +8,10 @@ Layout of the output folder::
                            by readings and by the sensitivity analysis)
     plan_times.json        Fig. 1's measured plan times, with their setting and machine
     tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
-                           plan_times, report, report_curve, others (the planners beyond
-                           the paper), and sensitivity (claim × single change of the reading)
+                           plan_times, mtsp_plans, report, report_curve, others (the
+                           planners beyond the paper), and sensitivity (claim × single
+                           change of the reading); main_runs, miss_runs, shadowing_runs
+                           (Parquet only): every run's values, for the paired statistics
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
     replay-rc500.html      one run flown by each of the paper's planners, side by side (linked)
@@ -37,7 +39,14 @@ from sarlink.paper.experiments import (
 from sarlink.paper.figures import FIGURES, save
 from sarlink.paper.findings import Finding, Settings, check_all
 from sarlink.paper.report import ReplayLink, Sensitivity, Stage, machine, write_report
-from sarlink.paper.variants import Variant, flips, matrix, reading_tables, sensitivity
+from sarlink.paper.variants import (
+    Variant,
+    flips,
+    matrix,
+    presets,
+    reading_tables,
+    sensitivity,
+)
 from sarlink.planners import PAPER_PLANNERS, get_planner
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
@@ -73,6 +82,8 @@ class ReproductionResult:
     """The name of the reading the runs were made under."""
     variants: list[Variant]
     """With ``sensitivity``: the claims under each single change of the reading."""
+    presets: dict[str, list[Finding]]
+    """The claims under every preset reading, by name (``reading``'s are ``findings``)."""
 
 
 def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
@@ -105,9 +116,12 @@ def _plan_times(path: Path, missions: list[Mission], repeats: int) -> pd.DataFra
 
 
 def _write_tables(folder: Path, tables: dict[str, pd.DataFrame]) -> None:
+    """Every table as Parquet, and as CSV but for the per-run tables (``*_runs``), which are
+    large and read by programs only."""
     folder.mkdir(parents=True, exist_ok=True)
     for name, table in tables.items():
-        table.to_csv(folder / f"{name}.csv", index=False)
+        if not name.endswith("_runs"):
+            table.to_csv(folder / f"{name}.csv", index=False)
         table.to_parquet(folder / f"{name}.parquet", index=False)
 
 
@@ -192,10 +206,13 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         drawn[n] = save(spec.draw(*(tables[t] for t in spec.tables)), out / "figures", f"fig{n}")
     stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
                         time.perf_counter() - t0))
+    checked = [e for e in needed if set(e.figures) & set(range(1, 8))]
+    by_preset, timed = presets(chosen, tables, out / "runs", checked, runs, workers=workers,
+                               scheduler=scheduler, progress=progress)
+    stages += timed
     done: list[Variant] = []
     study = None
     if sensitivity_analysis:
-        checked = [e for e in needed if set(e.figures) & set(range(1, 8))]
         done, timed = sensitivity(chosen, tables, out / "runs", checked, runs, workers=workers,
                                   scheduler=scheduler, progress=progress)
         stages += timed
@@ -211,6 +228,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     md, page = write_report(out, runs=runs, quick=quick,
                             figures={n: paths[0] for n, paths in drawn.items()}, tables=tables,
                             findings=findings, stages=stages, seconds=seconds, workers=where,
-                            reading=chosen, replay=replay, sensitivity=study)
+                            reading=chosen, replay=replay, sensitivity=study,
+                            presets=by_preset)
     return ReproductionResult(out, runs, drawn, tables, findings, md, page, seconds, stages,
-                              replay.page, reading, done)
+                              replay.page, reading, done, by_preset)

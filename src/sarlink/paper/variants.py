@@ -28,7 +28,8 @@ from sarlink.paper.report import Stage
 from sarlink.planners import Planner, get_planner
 from sarlink.storage import load
 
-__all__ = ["FIG3_TDS", "Variant", "load_runs", "reaches", "reading_tables", "sensitivity",
+__all__ = ["FIG3_TDS", "Variant", "load_runs", "presets", "reaches", "reading_tables",
+           "sensitivity",
            "variants"]
 
 FIG3_TDS = (1000.0, 2000.0, 4000.0)
@@ -127,6 +128,26 @@ def reading_tables(runs_folder: Path, experiments: list[PaperExperiment], runs: 
     return tables, [stage]
 
 
+def presets(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Path,
+            experiments: list[PaperExperiment], runs: int, *, workers: int | None = None,
+            scheduler: str | None = None, progress: bool = True,
+            ) -> tuple[dict[str, list[Finding]], list[Stage]]:
+    """The claims under every preset of :data:`~sarlink.config.READINGS`, by name: under
+    ``reading`` from ``base`` (its tables), under each other from ``experiments`` rerun with
+    its choices (one sweep, sharing the runs of the planners they do not reach) and the
+    tables of ``base`` no choice reaches (Fig. 1's plan times, say)."""
+    others = [r for r in READINGS.values() if r.name != reading.name]
+    stages: list[Stage] = []
+    changed: list[dict[str, pd.DataFrame]] = [{} for _ in others]
+    if others and experiments:
+        changed, stage = _sweep(runs_folder, [r.choices for r in others], experiments, runs,
+                                workers=workers, scheduler=scheduler, progress=progress)
+        stages.append(replace(stage, name=f"{stage.name} (the other presets)"))
+    tables = {r.name: {**base, **mine} for r, mine in zip(others, changed, strict=True)}
+    return {r.name: check_all(tables.get(r.name, base), Settings(td_fig3=r.td_fig3))
+            for r in READINGS.values()}, stages
+
+
 @dataclass(frozen=True)
 class Variant:
     """The default reading with one choice changed, and the claims decided under it."""
@@ -174,7 +195,7 @@ def sensitivity(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Pa
 
 
 SYMBOL = {Outcome.HOLDS: "holds", Outcome.CONTRADICTED: "contradicted",
-          Outcome.UNDECIDED: "undecided"}
+          Outcome.UNDECIDED: "undecided", Outcome.NOT_TESTABLE: "not testable"}
 
 
 def matrix(findings: list[Finding], done: list[Variant]) -> pd.DataFrame:

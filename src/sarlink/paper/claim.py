@@ -1,0 +1,128 @@
+"""What a claim of the paper is, and what deciding it gives (:mod:`sarlink.paper.findings`
+holds the claims themselves).
+
+A claim quotes one sentence of the paper (with its section), says in a few words what is
+tested, names the summary tables its check reads, and has a check whose docstring is the exact
+criterion (the report quotes it). The check tests one or more parts, each *holds*,
+*contradicted*, *undecided at this sample size* or *not testable at this setting*
+(:class:`~sarlink.paper.evidence.Outcome`); the claim's outcome is that of its parts together
+(:func:`~sarlink.paper.evidence.worst`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import pandas as pd
+
+from sarlink.paper.evidence import Outcome, Part, Verdict, worst
+from sarlink.paper.experiments import TD_FIG3
+from sarlink.paper.paired import PairedTables
+
+__all__ = ["CLAIMS", "DEFAULT_SETTINGS", "Check", "Claim", "Finding", "Settings", "claim",
+           "tally"]
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Choices the paper leaves open that the claims' checks depend on (a model reading can
+    set them; the defaults are sarlink's)."""
+
+    td_fig3: float = TD_FIG3
+    """Fig. 3's target duration, s, at which the claims about Fig. 3's P_s against N_m are
+    read: the paper does not state it (:data:`sarlink.paper.experiments.TD_FIG3`, 2000 s;
+    1000 and 4000 s are the other candidates the runs hold)."""
+
+
+DEFAULT_SETTINGS = Settings()
+"""sarlink's choices."""
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One of the paper's claims decided on sarlink's results."""
+
+    figure: str
+    """What the claim is about (``Abstract``, ``Fig. 1``, ``Figs. 2–3``, ..., ``Conclusions``)."""
+    claim: str
+    outcome: Outcome
+    parts: tuple[Part, ...]
+    """Every tested part: the numbers that decide it, with their 95% intervals."""
+    notes: tuple[str, ...]
+    """Numbers shown for context, which decide nothing."""
+    criterion: str
+    """The exact rule applied (the check's docstring)."""
+    section: str = ""
+    """Where the sentence is in the paper."""
+    sentence: str = ""
+    """The paper's words."""
+
+    @property
+    def holds(self) -> bool:
+        """Whether the claim holds (none of its parts contradicted or undecided)."""
+        return self.outcome is Outcome.HOLDS
+
+    @property
+    def against(self) -> tuple[Part, ...]:
+        """The parts that do not hold, the contradicted ones first."""
+        order = [Outcome.CONTRADICTED, Outcome.UNDECIDED, Outcome.NOT_TESTABLE]
+        return tuple(sorted((p for p in self.parts if p.outcome is not Outcome.HOLDS),
+                            key=lambda p: order.index(p.outcome)))
+
+
+Check = Callable[[PairedTables, Settings], Verdict]
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A claim of the paper: the sentence, the summary tables its check reads, and the check."""
+
+    figure: str
+    section: str
+    sentence: str
+    text: str
+    """What is tested, in a few words."""
+    tables: tuple[str, ...]
+    check: Check
+
+    @property
+    def name(self) -> str:
+        return self.check.__name__
+
+    @property
+    def criterion(self) -> str:
+        return " ".join((self.check.__doc__ or "").split())
+
+    def checkable(self, tables: Mapping[str, pd.DataFrame]) -> bool:
+        return all(t in tables for t in self.tables)
+
+    def __call__(self, tables: Mapping[str, pd.DataFrame] | PairedTables,
+                 settings: Settings = DEFAULT_SETTINGS) -> Finding:
+        """Decide the claim on ``tables`` (wrapped once for many claims by ``check_all``)."""
+        wrapped = tables if isinstance(tables, PairedTables) else PairedTables(tables)
+        verdict = self.check(wrapped, settings)
+        return Finding(self.figure, self.text, worst(p.outcome for p in verdict.parts),
+                       tuple(verdict.parts), tuple(verdict.notes), self.criterion,
+                       self.section, self.sentence)
+
+
+CLAIMS: list[Claim] = []
+"""Every claim, in the paper's order."""
+
+
+def claim(figure: str, section: str, sentence: str, text: str,
+          tables: tuple[str, ...] = ("main_runs",)) -> Callable[[Check], Claim]:
+    """Register the decorated check as a claim about ``figure``, quoting ``sentence``."""
+    def register(check: Check) -> Claim:
+        made = Claim(figure, section, sentence, text, tables, check)
+        CLAIMS.append(made)
+        return made
+    return register
+
+
+def tally(findings: Sequence[Finding]) -> str:
+    """``"N hold, M contradicted, K undecided, L not testable"``."""
+    count = {o: sum(f.outcome is o for f in findings) for o in Outcome}
+    return (f"{count[Outcome.HOLDS]} hold, {count[Outcome.CONTRADICTED]} contradicted, "
+            f"{count[Outcome.UNDECIDED]} undecided, {count[Outcome.NOT_TESTABLE]} not testable")
