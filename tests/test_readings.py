@@ -27,6 +27,7 @@ from sarlink.engine.rules import CONB
 from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import plan_seed, run_streams
 from sarlink.paper import ReproductionResult, reproduce
+from sarlink.paper.experiments import EXPERIMENTS
 from sarlink.paper.variants import SYMBOL, reaches, variants
 from sarlink.planners import get_planner
 
@@ -175,18 +176,32 @@ def study(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult) -> None:
     folders = {p.name: sorted(f.name for f in p.iterdir())
                for p in (study.out / "runs" / "miss").iterdir()}
+    experiment = EXPERIMENTS["miss"].build(3)
+
+    def presets(planner: str) -> set[str]:  # the report tallies the claims under each preset
+        reach = reaches(get_planner(planner), experiment)
+        return {"-".join(r.choices[c] for c in reach) for r in READINGS.values()}
+
     # CovB: the take-off, Eq. 8's direction, reachability; mTSP: reachability, the plan
-    assert folders["covb"] == sorted(["even-push-direct", "random-push-direct",
+    assert folders["covb"] == sorted({"even-push-direct", "random-push-direct",
                                       "jitter-push-direct", "even-printed-direct",
-                                      "even-push-multihop"])
-    assert folders["mtsp"] == sorted(["direct-shared", "multihop-shared", "direct-per-run"])
+                                      "even-push-multihop"} | presets("covb"))
+    assert folders["mtsp"] == sorted({"direct-shared", "multihop-shared", "direct-per-run"}
+                                     | presets("mtsp"))
     assert folders["conb"] == sorted(
-        ["period-routed-keep-even-contact-direct", "continuous-routed-keep-even-contact-direct",
+        {"period-routed-keep-even-contact-direct", "continuous-routed-keep-even-contact-direct",
          "period-all-keep-even-contact-direct", "period-routed-home-even-contact-direct",
          "period-routed-keep-random-contact-direct", "period-routed-keep-jitter-contact-direct",
-         "period-routed-keep-even-heading-direct", "period-routed-keep-even-contact-multihop"])
-    assert len(folders["mtsp-conb"]) == 10  # ConB's eight, and the plan's and prediction's
-    assert len(folders["concov"]) == 11  # the reading and each of its ten changes
+         "period-routed-keep-even-heading-direct", "period-routed-keep-even-contact-multihop"}
+        | presets("conb"))
+    base = READINGS["sarlink-1"].choices
+    for planner, singles in (("mtsp-conb", 10), ("concov", 11)):  # the reading and its changes
+        reach = reaches(get_planner(planner), experiment)
+        changed = {"-".join({**base, v.choice: v.value}[c] for c in reach)
+                   for v in study.variants if v.choice in reach}
+        assert len(changed | {"-".join(base[c] for c in reach)}) == singles
+        assert folders[planner] == sorted(changed | {"-".join(base[c] for c in reach)}
+                                          | presets(planner))
 
 
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
