@@ -26,7 +26,8 @@ from sarlink.metrics import summarize
 from sarlink.sizing import DesignAnswer, DesignRequest, Verdict, design
 from sarlink.sizing.sequential import worse
 
-SMALL = Mission.build(size=2000.0, rc=500.0)
+SMALL = Mission.build(reading="sarlink-2", size=2000.0, rc=500.0)
+"""The small setting the expectations below were measured on, under the reading of then."""
 PAPER = {"on_detect": ["continue"]}
 """The paper's behaviour only: one variant per planner (the default also tries reporting)."""
 

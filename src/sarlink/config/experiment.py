@@ -20,6 +20,7 @@ from pydantic_core import to_json
 
 from sarlink.config.base import Checked, ConfigError, read_toml
 from sarlink.config.mission import Mission, param_groups
+from sarlink.config.readings import EARLIER_CHOICES
 
 __all__ = ["MAX_POINTS", "MAX_RUNS", "MAX_WORKERS", "Experiment", "mission_hash"]
 
@@ -33,7 +34,10 @@ MAX_RUNS = 1_000_000_000
 takes a millisecond)."""
 
 
-ADDED_LATER: dict[str, dict[str, Any]] = {"channel": {"radio": None}}
+ADDED_LATER: dict[str, dict[str, Any]] = {
+    "channel": {"radio": None, "decorrelation": 50.0},
+    "readings": EARLIER_CHOICES,
+}
 """Parameters added after results were first stored, with the value that keeps the earlier
 behaviour: left out of the hash at that value, so earlier results folders stay valid."""
 

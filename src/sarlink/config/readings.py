@@ -13,9 +13,9 @@ from dataclasses import dataclass, field
 
 from sarlink.config.base import ConfigError
 
-__all__ = ["DEFAULT_READING", "READINGS", "Reading", "get_reading"]
+__all__ = ["DEFAULT_READING", "EARLIER_CHOICES", "READINGS", "Reading", "get_reading"]
 
-_FIRST = {"takeoff": "even", "conb_fallback": "contact", "covb_direction": "push",
+EARLIER_CHOICES = {"takeoff": "even", "conb_fallback": "contact", "covb_direction": "push",
           "shadowing": "period", "reachability": "direct", "mtsp_plan": "shared",
           "mtsp_prediction": "heading"}
 """The choices sarlink made before they were named: the older presets keep them."""
@@ -41,7 +41,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         "R_con = the heading while connected (Algorithm 2), and Fig. 3 at t_d = 4000 s (the "
         "only t_d the text names with it)",
         {"conb_check": "continuous", "contacts": "all", "isolated": "keep",
-         "concov_fallback": "heading", "concov_connected": "heading", **_FIRST},
+         "concov_fallback": "heading", "concov_connected": "heading", **EARLIER_CHOICES},
         td_fig3=4000.0,
     ),
     Reading(
@@ -50,7 +50,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         "sec has elapsed'), j among the neighbours that keep a route to the BS, Fig. 3 at "
         "t_d = 2000 s",
         {"conb_check": "period", "contacts": "routed", "isolated": "keep",
-         "concov_fallback": "heading", "concov_connected": "heading", **_FIRST},
+         "concov_fallback": "heading", "concov_connected": "heading", **EARLIER_CHOICES},
         td_fig3=2000.0,
     ),
     Reading(
@@ -61,7 +61,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         "where Eq. 12's two terms cancel, ConCov follows ConB's 'attraction force against "
         "disconnections'; Fig. 3 at t_d = 2000 s",
         {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
-         "concov_fallback": "connectivity", "concov_connected": "heading", **_FIRST},
+         "concov_fallback": "connectivity", "concov_connected": "heading", **EARLIER_CHOICES},
         td_fig3=2000.0,
     ),
     Reading(
