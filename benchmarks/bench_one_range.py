@@ -32,4 +32,5 @@ with tempfile.TemporaryDirectory() as tmp:
         s = time.process_time()
         sweep_all([(exp(300), Path(tmp) / f"r{i}")], progress=False, pool=InProcess())
         best.append(time.process_time() - s)
-print(sys.argv[1], "one-range CovB N=10 sweep, 300 runs, CPU s (3 repeats):", " ".join(f"{b:.2f}" for b in best))
+print(sys.argv[1], "one-range CovB N=10 sweep, 300 runs, CPU s (3 repeats):",
+      " ".join(f"{b:.2f}" for b in best))
