@@ -199,7 +199,7 @@ def test_cli_reports_where_the_report_is(tmp_path: Path, monkeypatch: pytest.Mon
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--figures", "1,10"], "figures must be among"),
+    (["--figures", "1,11"], "figures must be among"),
     (["--figures", "one"], "--figures takes figure numbers"),
     (["--runs", "0"], "runs must be at least 1"),
 ])
