@@ -21,6 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.stats import beta, binomtest
 
+from sarlink.metrics import wilson
+
 __all__ = ["Schedule", "Verdict", "lower_bound", "not_worse_by", "upper_bound", "verdict",
            "worse"]
 
@@ -79,11 +81,14 @@ def verdict(successes: int, runs: int, required: float, *, meets_error: float,
             fails_error: float, final: bool) -> Verdict:
     """Judge ``P_s >= required`` from ``successes`` of ``runs``.
 
+    "Meets" also needs the 95 % Wilson lower bound, which the answer reports, at or above
+    ``required`` (the exact bound is nearly always the stricter; not at ``successes = runs``).
     ``meets_error`` bounds the chance of "meets" when ``P_s < required``, ``fails_error`` that
     of "fails" when ``P_s >= required`` (per look: the caller divides by the looks). ``final``:
     this is the last look, so an undecided candidate is borderline rather than open.
     """
-    if lower_bound(successes, runs, meets_error) >= required:
+    if lower_bound(successes, runs, meets_error) >= required and float(
+            wilson(successes, runs)[0]) >= required:  # the interval reported agrees
         return Verdict.MEETS
     if upper_bound(successes, runs, fails_error) < required:
         return Verdict.FAILS
