@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from sarlink import Mission, prepare
+from sarlink.config.readings import EARLIER_CHOICES
 from sarlink.engine.build import kernel_for
 from sarlink.engine.radios import get_radio
 from sarlink.engine.streams import run_streams
@@ -124,7 +125,17 @@ def sides(rev: str, folder: Path) -> dict[str, Side]:
     old = load_revision(rev, folder)
 
     def old_mission(case: str, reading: str) -> Any:
+        """The case as the old revision's mission: choices named since are left out where
+        they hold the behaviour of before (else the revision cannot fly the case)."""
         data = case_mission(case, reading).model_dump(exclude={"channel": {"radio"}})
+        known = old.config.mission.Readings.model_fields
+        for choice, value in list(data["readings"].items()):
+            if choice not in known:
+                if EARLIER_CHOICES.get(choice) != value:
+                    raise SystemExit(f"{rev} cannot fly {choice} = {value!r}")
+                del data["readings"][choice]
+        if "decorrelation" not in old.config.mission.Channel.model_fields:
+            del data["channel"]["decorrelation"]  # read only by correlated fades
         return old.Mission(**data)
 
     return {"old": Side(old_mission, old.prepare), "new": Side(case_mission, prepare,
