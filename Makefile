@@ -58,7 +58,7 @@ lint: $(BIN)/sarlink
 	$(BIN)/mypy
 
 test: browser lint
-	$(BIN)/pytest -q
+	$(BIN)/pytest -q -n auto --dist loadfile
 
 docs: $(BIN)/sarlink
 	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict --site-dir site

@@ -20,5 +20,10 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "sarlink"))
 
 @pytest.fixture(autouse=True, scope="session")
 def _private_plan_cache(tmp_path_factory: pytest.TempPathFactory) -> None:
-    """Keep the tests' mTSP plans out of the user's cache (shared by the whole session)."""
-    os.environ["SARLINK_CACHE_DIR"] = str(tmp_path_factory.mktemp("cache"))
+    """Keep the tests' mTSP plans and kernels out of the user's cache. Under pytest-xdist the
+    workers share one (their base temp folders' parent): plans and kernel sources are written
+    once under file locks, so a plan is solved and a kernel written once per test session."""
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if "PYTEST_XDIST_WORKER" in os.environ else base
+    (root / "sarlink-cache").mkdir(exist_ok=True)
+    os.environ["SARLINK_CACHE_DIR"] = str(root / "sarlink-cache")

@@ -21,7 +21,7 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError, Experiment, Mission, load, sweep
 from sarlink.cli import app
-from sarlink.config import READINGS, mission_hash
+from sarlink.config import mission_hash
 from sarlink.metrics import summarize
 from sarlink.sizing import DesignAnswer, DesignRequest, Verdict, design
 from sarlink.sizing.sequential import worse
@@ -256,8 +256,7 @@ def test_a_killed_design_resumes_to_the_same_answer(
     _, full = adaptive
     argv = [sys.executable, "-c", "from sarlink.cli import app; app()", "design",
             "--size", "2000", "--rc", "500", "--td", "600", "--ps", str(REQUIRED),
-            *[a for c, v in READINGS["sarlink-2"].choices.items()
-              for a in ("--option", f"{c}={v}")],  # SMALL's reading
+            "--reading", "sarlink-2",  # SMALL's reading
             "--planner", "covb", "--planner", "concov",
             "--alpha-step", "0.5", "--alpha-tol", "0.5", "--max-drones", "5",
             "--candidate-runs", "1600", "--option", "on_detect=continue", "--workers", "1",

@@ -144,7 +144,7 @@ FLAGS: tuple[Flag, ...] = _rows(
     ("--iterations", int, "GA iterations", "iterations", {"plan"}),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
-         "flags override both", None, ONE_RUN, apply=_read),
+         "flags override both", None, ONE_RUN | {"design"}, apply=_read),
     ("--area", Path, "the search area: a GeoJSON polygon in longitude/latitude, its holes "
      "no-fly zones (docs/missions.md)", None, {*ONE_RUN, "design", "plan", "export"}),
     ("--bs", str, "the BS's longitude,latitude in degrees (else the area file's Point)", None,
