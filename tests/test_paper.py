@@ -46,9 +46,9 @@ from sarlink.planners.patterns import PATTERNS
 
 @pytest.fixture(scope="module")
 def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
-    """``reproduce --quick --runs 10``, with a short GA for Fig. 1's timing."""
+    """``reproduce --quick --runs 10 --presets``, with a short GA for Fig. 1's timing."""
     return reproduce(tmp_path_factory.mktemp("reproduction"), quick=True, runs=10,
-                     progress=False, plan_iterations=100)
+                     progress=False, plan_iterations=100, presets=True)
 
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
@@ -182,6 +182,8 @@ def test_a_second_call_reuses_the_stored_runs_and_plan_times(quick: Reproduction
     pd.testing.assert_frame_equal(again.tables["main"], quick.tables["main"])
     assert sorted(again.figures) == [1, 3]
     assert "miss" not in again.tables  # only what the figures need
+    assert again.presets == {again.reading: again.findings}  # --quick leaves the presets out
+    assert "tallied under this reading only" in again.report_md.read_text()
 
 
 def test_cli_reports_where_the_report_is(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

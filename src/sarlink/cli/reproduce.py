@@ -45,6 +45,10 @@ def reproduce(
         "--sensitivity", help="also decide every claim under each single change of the "
         "reading (reruns only what a change reaches) and report what each claim depends "
         "on")] = False,
+    presets: Annotated[bool | None, typer.Option(
+        "--presets/--no-presets", help="also tally the claims under every other preset "
+        "reading (reruns the planners each reaches); default: yes, but not with --quick",
+        show_default=False)] = None,
 ) -> None:
     """Rerun the experiments behind the paper's Figs. 1-7 (and Fig. 8, beyond the paper), draw
     them and report which of the paper's claims hold, are contradicted or stay undecided; an
@@ -60,7 +64,8 @@ def reproduce(
         folder = output_folder(out, "--out")  # plan_times.json goes straight into it
         result = run_reproduction(folder, runs=runs, quick=quick, figures=_numbers(figures),
                                   workers=workers, scheduler=scheduler, progress=not quiet,
-                                  reading=reading, sensitivity_analysis=sensitivity)
+                                  reading=reading, sensitivity_analysis=sensitivity,
+                                  presets=presets)
     findings = (f"{len(result.findings)} of the paper's claims checked: "
                 f"{tally(result.findings)}" if result.findings else "no claims checked")
     others = "".join(f"; under {name}: {tally(found)}" for name, found in result.presets.items()

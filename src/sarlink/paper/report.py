@@ -197,6 +197,10 @@ def _presets(findings: Sequence[Finding], reading: Reading,
              presets: dict[str, list[Finding]] | None) -> list[_Block]:
     """The tally under every preset reading: its range, not one chosen number."""
     by_name = presets or {reading.name: list(findings)}
+    if list(by_name) == [reading.name]:
+        return [_Para("The claims were tallied under this reading only: the tally under every "
+                      "other preset reading reruns the experiments with its choices "
+                      "(`sarlink reproduce --presets`; done by default without `--quick`).")]
     rows = [(name + (" (this report)" if name == reading.name else ""),
              READINGS[name].about if name in READINGS else "", tally(found))
             for name, found in by_name.items()]

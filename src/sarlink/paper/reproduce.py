@@ -43,7 +43,7 @@ from sarlink.paper.variants import (
     Variant,
     flips,
     matrix,
-    presets,
+    preset_findings,
     reading_tables,
     sensitivity,
 )
@@ -83,7 +83,8 @@ class ReproductionResult:
     variants: list[Variant]
     """With ``sensitivity``: the claims under each single change of the reading."""
     presets: dict[str, list[Finding]]
-    """The claims under every preset reading, by name (``reading``'s are ``findings``)."""
+    """The claims under every preset reading, by name (``reading``'s are ``findings``); only
+    ``reading``'s when the other presets were not run (``presets=False``)."""
 
 
 def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
@@ -149,7 +150,8 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
               figures: Iterable[int] | None = None, workers: int | None = None,
               scheduler: str | None = None, progress: bool = True,
               plan_iterations: int | None = None, reading: str = DEFAULT_READING,
-              sensitivity_analysis: bool = False) -> ReproductionResult:
+              sensitivity_analysis: bool = False, presets: bool | None = None,
+              ) -> ReproductionResult:
     """Rerun the experiments behind the paper's figures into ``out`` and report on them.
 
     Only the sweeps the requested figures need are run; runs already stored in ``out`` (by an
@@ -178,6 +180,11 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         Also decide every claim under each single change of the reading, rerunning only the
         experiments of Figs. 2-7 and only the planners a change reaches; the report gets the
         matrix claim × change.
+    presets
+        Also decide every claim under each other preset reading, rerunning the planners its
+        choices reach (the report's tally under every preset); default: not with ``quick``,
+        whose few runs leave most claims undecided anyway and which would run four times the
+        sweeps.
     """
     start = time.perf_counter()
     out = Path(out)
@@ -207,9 +214,12 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     stages.append(Stage("figures and tables", f"{len(drawn)} figures, {len(tables)} tables",
                         time.perf_counter() - t0))
     checked = [e for e in needed if set(e.figures) & set(range(1, 8))]
-    by_preset, timed = presets(chosen, tables, out / "runs", checked, runs, workers=workers,
-                               scheduler=scheduler, progress=progress)
-    stages += timed
+    by_preset = {chosen.name: findings}
+    if presets if presets is not None else not quick:
+        by_preset, timed = preset_findings(chosen, tables, out / "runs", checked, runs,
+                                           workers=workers, scheduler=scheduler,
+                                           progress=progress)
+        stages += timed
     done: list[Variant] = []
     study = None
     if sensitivity_analysis:

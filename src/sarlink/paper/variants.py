@@ -28,7 +28,7 @@ from sarlink.paper.report import Stage
 from sarlink.planners import Planner, get_planner
 from sarlink.storage import load
 
-__all__ = ["FIG3_TDS", "Variant", "load_runs", "presets", "reaches", "reading_tables",
+__all__ = ["FIG3_TDS", "Variant", "load_runs", "preset_findings", "reaches", "reading_tables",
            "sensitivity",
            "variants"]
 
@@ -128,7 +128,7 @@ def reading_tables(runs_folder: Path, experiments: list[PaperExperiment], runs: 
     return tables, [stage]
 
 
-def presets(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Path,
+def preset_findings(reading: Reading, base: dict[str, pd.DataFrame], runs_folder: Path,
             experiments: list[PaperExperiment], runs: int, *, workers: int | None = None,
             scheduler: str | None = None, progress: bool = True,
             ) -> tuple[dict[str, list[Finding]], list[Stage]]:
