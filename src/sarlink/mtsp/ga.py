@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from numba.np.random.random_methods import random_interval
 
 from sarlink.mtsp.plan import Objective, distance_matrix
 
@@ -34,7 +35,7 @@ def solve_ga(
     return tours, history
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _measure(
     dmat: np.ndarray, rte: np.ndarray, brk: np.ndarray, lens: np.ndarray, p: int,
     ref_len: np.ndarray, r: int, lo: int, hi: int, minmax: bool,
@@ -84,7 +85,7 @@ def _break_probabilities(dof: int, n_breaks: int) -> np.ndarray:
     return cum / cum[-1]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _random_breaks(
     brk: np.ndarray, p: int, n: int, min_tour: int, cum_prob: np.ndarray, scratch: np.ndarray,
     adjust: np.ndarray, rng: np.random.Generator,
@@ -119,6 +120,19 @@ def _random_breaks(
     for b in range(n_breaks):
         extra += adjust[b]
         brk[p, b] = min_tour * (b + 1) + extra
+
+
+@njit(cache=True, inline="always")
+def _shuffle(x: np.ndarray, rng: np.random.Generator) -> None:
+    """``rng.shuffle(x)`` of a 1-d array: the same draws (Numba's own ``random_interval``, the
+    bounded integers its ``shuffle`` draws) and the same swaps, without the 0-d views through
+    which Numba's ``shuffle`` swaps, two atomic reference counts each. The kernel's test
+    compares with ``rng.shuffle``, so a Numba that draws otherwise fails it."""
+    bitgen = rng.bit_generator
+    for i in range(x.size - 1, 0, -1):
+        j = np.int64(random_interval(bitgen, i))
+        if i != j:
+            x[i], x[j] = x[j], x[i]
 
 
 @njit(cache=True)
@@ -173,7 +187,7 @@ def _ga_kernel(
         if it == iterations - 1:
             break  # the last iteration's children would never be costed
 
-        rng.shuffle(order)
+        _shuffle(order, rng)
         for g in range(0, pop_size, 8):
             b = order[g]
             for q in range(g + 1, g + 8):
