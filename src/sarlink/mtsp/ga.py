@@ -126,8 +126,8 @@ def _random_breaks(
 def _shuffle(x: np.ndarray, rng: np.random.Generator) -> None:
     """``rng.shuffle(x)`` of a 1-d array: the same draws (Numba's own ``random_interval``, the
     bounded integers its ``shuffle`` draws) and the same swaps, without the 0-d views through
-    which Numba's ``shuffle`` swaps, two atomic reference counts each. The kernel's test
-    compares with ``rng.shuffle``, so a Numba that draws otherwise fails it."""
+    which Numba's ``shuffle`` swaps, with atomic reference counts at every swap. The kernel's
+    test compares with ``rng.shuffle``, so a Numba that draws otherwise fails it."""
     bitgen = rng.bit_generator
     for i in range(x.size - 1, 0, -1):
         j = np.int64(random_interval(bitgen, i))
