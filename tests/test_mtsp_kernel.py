@@ -131,15 +131,15 @@ def test_solve_makes_the_plans_main_made() -> None:
         assert _plan_record(plan) == {k: p[k] for k in ("tours", "history_sha256")}, p
 
 
-def test_a_run_flies_the_routes_main_gave_it() -> None:
+def test_a_run_flies_the_routes_main_gave_it(tmp_path: Path,
+                                             monkeypatch: pytest.MonkeyPatch) -> None:
     from sarlink import Mission
-    from sarlink.mtsp import clear_cache
     from sarlink.planners.base import _own_routes
     from sarlink.planners.registry import get_planner
 
     stored = json.loads(MAIN_PLANS.read_text())["runs"]
     assert [(r["planner"], r["drones"], r["seed"], r["run"]) for r in stored] == RUN_CASES
-    clear_cache()  # solved here, not read from a plan stored by an earlier test
+    monkeypatch.setenv("SARLINK_CACHE_DIR", str(tmp_path))  # solved here, not read from disk
     for r in stored:
         mission = Mission.build(drones=r["drones"], planner=r["planner"])
         assert mission.readings.mtsp_plan == r["reading"] == "per-run"
