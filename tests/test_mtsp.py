@@ -335,6 +335,25 @@ def test_a_corrupt_cache_file_is_a_miss_and_is_rewritten(cache: Cache, damage: s
     assert json.loads(path.read_text())["tours"] == [list(t) for t in first.tours]
 
 
+def test_only_a_mission_s_plan_is_synced_to_disk_and_a_lost_per_run_plan_is_made_again(
+        cache: Cache, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A power cut may leave a per-run plan, written without fsync, empty or partial: it is
+    then a miss, solved again to the same tours."""
+    synced: list[int] = []
+    monkeypatch.setattr(plan_cache.os, "fsync", synced.append)
+    plan_for(BASE, 3)
+    assert len(synced) == 1
+    compact = plan_for(BASE, 4, compact=True)
+    assert len(synced) == 1 and cache.solves == 2
+    (path,) = [f for f in cache.dir.glob("*.json") if "history" in json.loads(f.read_text())
+               ["params"]]
+    text = path.read_text()
+    for left in ("", text[: len(text) // 2]):
+        path.write_text(left)
+        assert plan_for(BASE, 4, compact=True).tours == compact.tours
+    assert cache.solves == 4
+
+
 def test_a_cache_file_with_bad_tours_is_a_miss(cache: Cache) -> None:
     plan_for(BASE, 3)
     (path,) = cache.dir.glob("*.json")
