@@ -21,10 +21,19 @@ knew the step before: their key) of the largest key on the way, two passes over 
 The BS is notified at ``R2`` from the first step its key is ``≤ R2``; the steps at which the
 running minimum of its key falls are the run's notification staircase, all that P_s needs.
 
-The flight is read from its positions (``Params.trace``); the sensing looks and the fades are
-drawn again from fresh copies of the run's streams, which the flight draws independently of
-``r_c`` (docs/model.md, "One flight, every range"). Only the built-in log-normal radio
-(disc and shadowing) is read this way: its fades are redrawn here with its own hook.
+Read at a few given ranges without the staircase (what a sweep over ``rc`` needs), a tree per
+step is more than needed: the graph at each range changes only when a link's key crosses that
+range, which moving drones do about once a step among all the links and ranges of a run. So
+the links' *bands* (how many of the ranges lie below their key) are followed instead, and the
+graph of a range, with its BS component, reachability and flood (the kernel's own functions),
+is worked out again only when a link enters or leaves it, or a drone newly senses the target
+(:func:`_bands`, a third of the cost of the trees at 8 ranges and N = 10).
+
+The flight is read from its positions (``Params.trace``: the flight keeps no graph); the
+sensing looks and the fades are drawn again from copies of the run's streams, which the flight
+draws independently of ``r_c`` (docs/model.md, "One flight, every range"). Only the built-in
+log-normal radio (disc and shadowing) is read this way: its fades are redrawn here with its
+own hook.
 """
 
 from __future__ import annotations
