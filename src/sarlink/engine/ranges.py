@@ -27,7 +27,7 @@ range, which moving drones do about once a step among all the links and ranges o
 the links' *bands* (how many of the ranges lie below their key) are followed instead, and the
 graph of a range, with its BS component, reachability and flood (the kernel's own functions),
 is worked out again only when a link enters or leaves it, or a drone newly senses the target
-(:func:`_bands`, a third of the cost of the trees at 8 ranges and N = 10).
+(:func:`_bands`, about half the cost of the trees at 8 ranges and N = 10).
 
 The flight is read from its positions (``Params.trace``: the flight keeps no graph); the
 sensing looks and the fades are drawn again from copies of the run's streams, which the flight
@@ -63,7 +63,8 @@ class Critical(NamedTuple):
     detector: int
     """The first detector (``-1``: none)."""
     notify_steps: np.ndarray
-    """Steps at which the running minimum of the BS's knowledge key falls."""
+    """Steps at which the running minimum of the BS's knowledge key falls (empty unless the
+    staircase was asked for)."""
     notify_keys: np.ndarray
     """That minimum from each of those steps on (squared ranges, m², in the link pass's
     arithmetic): notified by ``notify_steps[j]`` iff ``notify_keys[j] ≤ R2``."""
@@ -407,8 +408,8 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
 
     With ``stairs``, the notification staircase, from every step's minimum spanning tree
     (:func:`_staircase`); without it, only the records at the ranges of ``r2s``, from the
-    graph at each of them kept up to date (:func:`_bands`, about a third of the cost), and
-    an empty staircase.
+    graph at each of them kept up to date (:func:`_bands`, about half the cost at 8 ranges),
+    and an empty staircase.
 
     ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them; a
     team that settled has fewer rows, and its last holds for the later steps. ``rng_shadow``
