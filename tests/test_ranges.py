@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from sarlink import ConfigError, Experiment, Mission, execution, storage
 from sarlink.engine import RadioModel
 from sarlink.engine.radios import lognormal
+from sarlink.engine.streams import copied, run_streams
 from sarlink.execution import sweep
 from sarlink.metrics import summarize
 from sarlink.ranges import at_range
@@ -70,6 +71,16 @@ def test_one_flight_equals_a_flight_at_each_range(team: dict, sigma: float, rcs:
     mission = Mission.build(**team, rc=1000.0, sigma=sigma, horizon=2000.0)
     assert prepare(mission).range_free
     check(mission, run, rcs)
+
+
+def test_a_copied_stream_draws_what_the_stream_draws() -> None:
+    """The reading redraws the flight's looks and fades from copies taken before it."""
+    stream = run_streams(5, 9).look
+    stream.random(3)
+    copy = copied(stream)
+    ahead = copy.standard_normal(50)
+    np.testing.assert_array_equal(stream.standard_normal(50), ahead)
+    assert stream.random() == copy.random()  # each goes on by itself
 
 
 @pytest.mark.parametrize("sigma", [0.0, 4.0])

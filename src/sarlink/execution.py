@@ -12,8 +12,8 @@ planner, a rule declared ``range_free`` such as CovB, drones that do not report:
 with the same runs are one job, which flies each run once and reads it at every range
 (:mod:`sarlink.engine.ranges`), with the same rows as one flight per range. A job of one
 range flies as before, unless the experiment asks for the notification staircase
-(``Experiment.staircase``): reading the critical ranges costs most of a flight, which only a
-job of several ranges earns back.
+(``Experiment.staircase``): reading the critical ranges costs about two thirds of a flight,
+which only a job of several ranges earns back.
 """
 
 from __future__ import annotations

@@ -129,10 +129,12 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
         graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
-        graph.bs_component(adj, n, routed, stack)
-        if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
-            t_not = t
-        reachable, connected = graph.reachability(adj, routed, n, p.reachability)
+        reachable, connected = False, 0
+        if not p.trace:  # a traced flight is read at every range afterwards (engine.ranges)
+            graph.bs_component(adj, n, routed, stack)
+            if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
+                t_not = t
+            reachable, connected = graph.reachability(adj, routed, n, p.reachability)
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)

@@ -37,7 +37,7 @@ from sarlink.engine.ranges import Critical, critical
 from sarlink.engine.records import RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
-from sarlink.engine.streams import Streams, run_streams
+from sarlink.engine.streams import Streams, copied, run_streams
 from sarlink.result import RunResult, Trajectory
 
 
@@ -193,11 +193,10 @@ class Prepared:
 
     def critical(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = True,
                  scenario: Scenario | None = None) -> tuple[Scenario, RunRecord, Critical]:
-        """One traced flight of a range-free mission at the smallest range of ``rcs`` (the
-        latest to stop at its notification), its critical ranges and its records at each
-        range of ``rcs``; with the run's initial conditions and the flight's own record.
-        Without ``staircase``, the staircase stops where every range of ``rcs`` is
-        notified."""
+        """One traced flight of a range-free mission (``Params.trace``: positions only, flown
+        to the horizon or the detection if it stops there), its critical ranges and its
+        records at each range of ``rcs``; with the run's initial conditions and the flight's
+        own record. Without ``staircase``, the staircase is empty."""
         if self.steering.per_run is not None:  # this run's own plan
             own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
             return Prepared.build(self.mission, own).critical(seed, run, rcs,
@@ -207,16 +206,16 @@ class Prepared:
             raise ValueError(f"{self.mission.team.planner} with these settings flies "
                              "differently at each range: fly each range")
         streams, scenario = self._start(seed, run, scenario)
-        fresh = run_streams(seed, run)  # the looks and fades, drawn again as the flight drew
+        # the looks and fades, drawn again as the flight draws them
+        shadow, look = copied(streams.shadow), copied(streams.look)
         p = self.params
         rec = self.record(streams, scenario, traced_at=min(rcs))
-        stopped = ((p.stop == STOP_DETECTED and rec.t_detect >= 0.0)
-                   or (p.stop == STOP_NOTIFIED and rec.t_notify >= 0.0))
+        stopped = p.stop == STOP_DETECTED and rec.t_detect >= 0.0
         positions = rec.track.positions
         crit = critical(p, p._replace(rc=1.0), float(scenario.target[0]),
                         float(scenario.target[1]), positions,
-                        positions.shape[0] - 1 if stopped else p.n_steps, fresh.shadow,
-                        fresh.look, self.cp_steps, np.array([rc * rc for rc in rcs]), staircase)
+                        positions.shape[0] - 1 if stopped else p.n_steps, shadow, look,
+                        self.cp_steps, np.array([rc * rc for rc in rcs]), staircase)
         return scenario, rec, crit
 
     def run_ranges(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = False,

@@ -8,7 +8,7 @@ draws of the earlier ones stay what they were.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -28,6 +28,15 @@ def run_streams(seed: int, run: int) -> Streams:
         raise ValueError(f"seed and run must be >= 0, got seed={seed}, run={run}")
     children = np.random.SeedSequence(seed, spawn_key=(run,)).spawn(len(Streams._fields))
     return Streams(*(np.random.Generator(np.random.PCG64(c)) for c in children))
+
+
+def copied(stream: np.random.Generator) -> np.random.Generator:
+    """A generator that draws what ``stream`` draws from now on (a third of the cost of the
+    run's streams drawn again)."""
+    state: Any = stream.bit_generator.state  # a PCG64's, as every stream here
+    bits = np.random.PCG64(0)
+    bits.state = state
+    return np.random.Generator(bits)
 
 
 def plan_seed(seed: int, run: int) -> int:
