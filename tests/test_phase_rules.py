@@ -163,8 +163,31 @@ def test_predict_routes_is_a_search_on_extrapolated_positions(
     hx, hy = _headings(angles)
     qx, qy, disc2, out, stack = _conb_arrays(n, rc)
     predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
-                   out, stack, np.zeros(n, np.bool_), *_no_routes(n))
+                   out, stack, np.zeros(n, np.bool_), *_no_routes(n),
+                   pack([range(n + 2)], words(n + 2))[0])
     assert members(out) == _predicted(xy, hx, hy, modes, p, steps, altitude)
+
+
+@given(team=teams(), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
+       goal=st.sets(st.integers(0, 9)))
+def test_a_search_towards_a_goal_finds_the_goal_s_routed_nodes(
+        team: tuple[list[tuple[float, float]], list[float], list[int]], steps: int, rc: float,
+        goal: set[int]) -> None:
+    """Stopping once every node of the goal is reached: the goal's routed nodes are exactly
+    those of the whole search, and every node found is routed."""
+    xy, angles, modes = team
+    n = len(angles)
+    goal = {a for a in goal if a < n + 2}
+    p = params(rc=rc)
+    px, py, pz = node_arrays(xy, n)
+    hx, hy = _headings(angles)
+    qx, qy, disc2, out, stack = _conb_arrays(n, rc)
+    predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
+                   out, stack, np.zeros(n, np.bool_), *_no_routes(n),
+                   pack([goal], words(n + 2))[0])
+    routed = _predicted(xy, hx, hy, modes, p, steps, 0.0)
+    assert members(out) & goal == routed & goal
+    assert members(out) <= routed
 
 
 @given(team=teams(), ts=st.integers(1, 30), rc=st.floats(200.0, 1500.0),

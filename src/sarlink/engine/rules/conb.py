@@ -19,7 +19,7 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine.geometry import FAR, TINY, unit
-from sarlink.engine.graph import add, bit, drop, push_new
+from sarlink.engine.graph import add, bit, covers, drop, first_nodes, push_new
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
@@ -43,7 +43,7 @@ class Workspace(NamedTuple):
     qy: np.ndarray
     disc2: np.ndarray  # squared nominal link ranges, none to the padding
     routed_next: np.ndarray  # predicted to keep a route to the BS
-    routed_step: np.ndarray  # the same at one increment (continuous check)
+    routed_step: np.ndarray  # the same at one increment, or the goal of a search
     stack: np.ndarray
 
 
@@ -80,14 +80,17 @@ def predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     pz: np.ndarray, p: Params, steps: int, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
     out: np.ndarray, stack: np.ndarray, on_route: np.ndarray, wp: np.ndarray,
-    wp_next: np.ndarray, wp_end: np.ndarray,
+    wp_next: np.ndarray, wp_end: np.ndarray, goal: np.ndarray,
 ) -> None:
     """Who reaches the BS ``steps`` increments ahead if every node keeps its heading
     (shadow-free range); with ``mtsp_prediction = paths`` a searching drone on a route
     (``on_route``, waypoints ``wp[wp_next[j]:wp_end[j]]``) flies on along it instead.
 
-    A breadth-first search from the BS that computes a node's links only when it reaches
-    the node: the links of nodes cut off from the BS are never needed.
+    A search from the BS that computes a node's links only when it expands the node (the
+    links of nodes cut off from the BS are never needed) and stops once it has reached every
+    node of the bitset ``goal``: ``out & goal`` is then exact, and ``out`` is exact when
+    ``goal`` holds every node. A ConB team mostly flies within range of the BS, whose links
+    alone then reach everyone: one node's links instead of every node's.
     """
     n = hx.shape[0]
     m = n + 2
@@ -107,7 +110,7 @@ def predict_routes(
     add(out, n + 1)  # the target relays nothing
     stack[0] = n
     top = 1
-    while top > 0:
+    while top > 0 and not covers(out, goal):
         top -= 1
         a = stack[top]
         xa, ya, za = qx[a], qy[a], pz[a]
@@ -142,12 +145,16 @@ def check_continuously(
     graph is predicted at each increment up to ``t + t_s``; ``routed_next`` holds the nodes
     routed at all of them, and a searching distributed drone outside it decides now (its
     clock restarts). Returns whether any drone decides this step.
+
+    A later increment's search only has to reach the nodes routed at every earlier one (the
+    goal of :func:`predict_routes`): the others are out of ``routed_next`` already.
     """
+    first_nodes(routed_step, hx.shape[0] + 2)  # the first increment's goal: every node
     predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, stack, on_route,
-                   wp, wp_next, wp_end)
+                   wp, wp_next, wp_end, routed_step)
     for s in range(2, p.ts_steps + 1):
         predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, stack,
-                       on_route, wp, wp_next, wp_end)
+                       on_route, wp, wp_next, wp_end, routed_next)
         for w in range(routed_next.shape[0]):
             routed_next[w] &= routed_step[w]
     any_deciding = False
@@ -264,9 +271,10 @@ def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
     """Eq. 9's direction of every deciding drone, predicting the routes a sensing period ahead
     unless the continuous check already did."""
     if p.conb_check != CONTINUOUS:
+        first_nodes(ws.routed_step, obs.hx.shape[0] + 2)  # the goal: every node
         predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, p.ts_steps, ws.qx,
                        ws.qy, ws.disc2, ws.routed_next, ws.stack, obs.on_route, obs.wp,
-                       obs.wp_next, obs.wp_end)
+                       obs.wp_next, obs.wp_end, ws.routed_step)
     conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
                   p, obs.rc, no_term, vx, vy)
 
