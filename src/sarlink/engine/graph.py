@@ -51,10 +51,10 @@ def drop(bits: np.ndarray, a: int) -> None:
 @njit(cache=True, inline="always", error_model="numpy")
 def covers(bits: np.ndarray, goal: np.ndarray) -> bool:
     """Whether every node of the bitset ``goal`` is in the bitset ``bits``."""
+    missing = _ZERO
     for w in range(bits.shape[0]):
-        if goal[w] & ~bits[w]:
-            return False
-    return True
+        missing |= goal[w] & ~bits[w]
+    return missing == _ZERO
 
 
 @njit(cache=True, inline="always", error_model="numpy")
