@@ -98,15 +98,15 @@ def predict_routes(
     m = n + 2
     mp = qx.shape[0]
     ahead = p.speed * steps * p.dt
-    paths = p.mtsp_prediction == PREDICT_PATHS
-    for j in range(m):
+    for j in range(m):  # every heading, in a loop without the routes' branch
         qx[j], qy[j] = px[j], py[j]
         if j < n and mode[j] != LANDED:
-            if paths and on_route[j] and mode[j] == SEARCHING:
+            qx[j] += ahead * hx[j]
+            qy[j] += ahead * hy[j]
+    if p.mtsp_prediction == PREDICT_PATHS:
+        for j in range(n):
+            if on_route[j] and mode[j] == SEARCHING:
                 qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
-            else:
-                qx[j] += ahead * hx[j]
-                qy[j] += ahead * hy[j]
     nw = out.shape[0]
     for w in range(nw):
         out[w] = expanded[w] = _ZERO
