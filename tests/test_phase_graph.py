@@ -17,7 +17,9 @@ from sarlink.engine.graph import (
     add,
     bit,
     bs_component,
+    covers,
     drop,
+    first_nodes,
     flood,
     has,
     linked,
@@ -192,3 +194,16 @@ def test_push_new_pushes_every_set_bit_in_increasing_order(word: int, w: int, to
     assert new_top == top + len(pushed)
     assert stack[top:new_top].tolist() == pushed
     assert (stack[:top] == -1).all() and (stack[new_top:] == -1).all()
+
+
+@given(st.sets(st.integers(0, 191)), st.sets(st.integers(0, 191)))
+def test_covers_is_the_subset_test(have: set[int], goal: set[int]) -> None:
+    bits, want = pack([have, goal], 3)
+    assert covers(bits, want) == (goal <= have)
+
+
+@given(st.integers(0, 192))
+def test_first_nodes_are_the_nodes_below_m(m: int) -> None:
+    bits = np.full(3, 12345, dtype=np.uint64)
+    first_nodes(bits, m)
+    assert members(bits) == set(range(m))

@@ -143,12 +143,13 @@ def _no_routes(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def _conb_arrays(n: int, rc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
                                              np.ndarray]:
-    """ConB's workspace: predicted positions, nominal ranges, a bitset and a stack."""
+    """ConB's workspace: predicted positions, nominal ranges, a bitset and the bitset of
+    expanded nodes."""
     m, mp = n + 2, padded(n + 2)
     disc2 = np.zeros((m, mp))
     disc2[:, :m] = rc * rc
     return (np.full(mp, FAR), np.full(mp, FAR), disc2, np.zeros(words(m), dtype=np.uint64),
-            np.empty(m, dtype=np.int64))
+            np.zeros(words(m), dtype=np.uint64))
 
 
 @given(team=teams(), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
@@ -161,10 +162,34 @@ def test_predict_routes_is_a_search_on_extrapolated_positions(
     p = params(rc=rc)
     px, py, pz = node_arrays(xy, n, altitude)
     hx, hy = _headings(angles)
-    qx, qy, disc2, out, stack = _conb_arrays(n, rc)
+    qx, qy, disc2, out, expanded = _conb_arrays(n, rc)
     predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
-                   out, stack, np.zeros(n, np.bool_), *_no_routes(n))
+                   out, expanded, np.zeros(n, np.bool_), *_no_routes(n),
+                   pack([range(n + 2)], words(n + 2))[0])
     assert members(out) == _predicted(xy, hx, hy, modes, p, steps, altitude)
+
+
+@given(team=teams(most=70), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
+       goal=st.sets(st.integers(0, 71)))
+def test_a_search_towards_a_goal_finds_the_goal_s_routed_nodes(
+        team: tuple[list[tuple[float, float]], list[float], list[int]], steps: int, rc: float,
+        goal: set[int]) -> None:
+    """Stopping once every node of the goal is reached: the goal's routed nodes are exactly
+    those of the whole search, and every node found is routed (teams of up to 70 drones:
+    the search crosses the bitsets' word boundary)."""
+    xy, angles, modes = team
+    n = len(angles)
+    goal = {a for a in goal if a < n + 2}
+    p = params(rc=rc)
+    px, py, pz = node_arrays(xy, n)
+    hx, hy = _headings(angles)
+    qx, qy, disc2, out, expanded = _conb_arrays(n, rc)
+    predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
+                   out, expanded, np.zeros(n, np.bool_), *_no_routes(n),
+                   pack([goal], words(n + 2))[0])
+    routed = _predicted(xy, hx, hy, modes, p, steps, 0.0)
+    assert members(out) & goal == routed & goal
+    assert members(out) <= routed
 
 
 @given(team=teams(), ts=st.integers(1, 30), rc=st.floats(200.0, 1500.0),
@@ -182,14 +207,14 @@ def test_the_continuous_check_decides_for_a_loss_at_any_increment(
     p = params(rc=rc, ts_steps=ts, mtsp_prediction=int(Prediction.HEADING))
     px, py, pz = node_arrays(xy, n)
     hx, hy = _headings(angles)
-    qx, qy, disc2, routed_next, stack = _conb_arrays(n, rc)
+    qx, qy, disc2, routed_next, expanded = _conb_arrays(n, rc)
     routed_step = routed_next.copy()
     decide = np.array(deciding[:n])
     last_change = np.full(n, 3, dtype=np.int64)
     k = 7
     any_deciding = check_continuously(
         k, px, py, hx, hy, np.array(modes, dtype=np.int8), np.array(on_route[:n]), pz, p, qx, qy,
-        disc2, routed_next, routed_step, stack, decide, last_change, *_no_routes(n))
+        disc2, routed_next, routed_step, expanded, decide, last_change, *_no_routes(n))
     always = set.intersection(*(_predicted(xy, hx, hy, modes, p, s, 0.0)
                                 for s in range(1, ts + 1)))
     assert members(routed_next) == always
@@ -207,11 +232,11 @@ def test_the_continuous_check_sees_a_loss_at_the_last_increment() -> None:
     xy = [(2981.0, 2000.0), (2000.0, 2975.0), BS, (100.0, 100.0)]
     p = params(rc=1000.0, ts_steps=4)
     px, py, pz = node_arrays(xy, 2)
-    qx, qy, disc2, routed_next, stack = _conb_arrays(2, 1000.0)
+    qx, qy, disc2, routed_next, expanded = _conb_arrays(2, 1000.0)
     deciding, last_change = np.zeros(2, dtype=np.bool_), np.zeros(2, dtype=np.int64)
     assert check_continuously(9, px, py, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
                               np.array([SEARCHING] * 2, dtype=np.int8), np.zeros(2, np.bool_),
-                              pz, p, qx, qy, disc2, routed_next, routed_next.copy(), stack,
+                              pz, p, qx, qy, disc2, routed_next, routed_next.copy(), expanded,
                               deciding, last_change, *_no_routes(2))
     assert deciding.tolist() == [True, False]
     assert last_change.tolist() == [9, 0]

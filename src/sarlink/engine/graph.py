@@ -49,6 +49,23 @@ def drop(bits: np.ndarray, a: int) -> None:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def covers(bits: np.ndarray, goal: np.ndarray) -> bool:
+    """Whether every node of the bitset ``goal`` is in the bitset ``bits``."""
+    missing = _ZERO
+    for w in range(bits.shape[0]):
+        missing |= goal[w] & ~bits[w]
+    return missing == _ZERO
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def first_nodes(bits: np.ndarray, m: int) -> None:
+    """``bits``: the nodes ``0 .. m-1``."""
+    for w in range(bits.shape[0]):
+        k = m - w * 64
+        bits[w] = ~_ZERO if k >= 64 else (_ONE << np.uint64(max(k, 0))) - _ONE
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def linked(adj: np.ndarray, a: int, b: int) -> bool:
     """Whether nodes ``a`` and ``b`` are linked."""
     return (adj[a, b >> 6] >> np.uint64(b & 63)) & _ONE != 0

@@ -19,7 +19,7 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine.geometry import FAR, TINY, unit
-from sarlink.engine.graph import add, bit, drop, push_new
+from sarlink.engine.graph import add, bit, covers, drop, first_nodes, lowest
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
@@ -43,8 +43,8 @@ class Workspace(NamedTuple):
     qy: np.ndarray
     disc2: np.ndarray  # squared nominal link ranges, none to the padding
     routed_next: np.ndarray  # predicted to keep a route to the BS
-    routed_step: np.ndarray  # the same at one increment (continuous check)
-    stack: np.ndarray
+    routed_step: np.ndarray  # the same at one increment, or the goal of a search
+    expanded: np.ndarray  # the nodes a search has expanded
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -55,7 +55,7 @@ def workspace(obs: Observation) -> Workspace:
     disc2 = np.zeros((m, mp))
     disc2[:, :m] = obs.rc * obs.rc
     return Workspace(np.full(mp, FAR), np.full(mp, FAR), disc2, np.zeros(nw, dtype=np.uint64),
-                     np.zeros(nw, dtype=np.uint64), np.empty(m, dtype=np.int64))
+                     np.zeros(nw, dtype=np.uint64), np.zeros(nw, dtype=np.uint64))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -79,40 +79,51 @@ def along_route(j: int, px: np.ndarray, py: np.ndarray, wp: np.ndarray, wp_next:
 def predict_routes(
     px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     pz: np.ndarray, p: Params, steps: int, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
-    out: np.ndarray, stack: np.ndarray, on_route: np.ndarray, wp: np.ndarray,
-    wp_next: np.ndarray, wp_end: np.ndarray,
+    out: np.ndarray, expanded: np.ndarray, on_route: np.ndarray, wp: np.ndarray,
+    wp_next: np.ndarray, wp_end: np.ndarray, goal: np.ndarray,
 ) -> None:
     """Who reaches the BS ``steps`` increments ahead if every node keeps its heading
     (shadow-free range); with ``mtsp_prediction = paths`` a searching drone on a route
     (``on_route``, waypoints ``wp[wp_next[j]:wp_end[j]]``) flies on along it instead.
 
-    A breadth-first search from the BS that computes a node's links only when it reaches
-    the node: the links of nodes cut off from the BS are never needed.
+    A search from the BS that computes a node's links only when it expands the node (the
+    links of nodes cut off from the BS are never needed) and stops once it has reached every
+    node of the bitset ``goal``: ``out & goal`` is then exact, and ``out`` is exact when
+    ``goal`` holds every node. A ConB team mostly flies within range of the BS, whose links
+    alone then reach everyone: one node's links instead of every node's. The nodes still to
+    expand are ``out & ~expanded``, a bitset rather than a stack, so that the nodes reached
+    by the last expansion cost nothing when the search stops there.
     """
     n = hx.shape[0]
     m = n + 2
     mp = qx.shape[0]
     ahead = p.speed * steps * p.dt
-    paths = p.mtsp_prediction == PREDICT_PATHS
-    for j in range(m):
+    for j in range(m):  # every heading, in a loop without the routes' branch
         qx[j], qy[j] = px[j], py[j]
         if j < n and mode[j] != LANDED:
-            if paths and on_route[j] and mode[j] == SEARCHING:
+            qx[j] += ahead * hx[j]
+            qy[j] += ahead * hy[j]
+    if p.mtsp_prediction == PREDICT_PATHS:
+        for j in range(n):
+            if on_route[j] and mode[j] == SEARCHING:
                 qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
-            else:
-                qx[j] += ahead * hx[j]
-                qy[j] += ahead * hy[j]
-    out[:] = 0
+    nw = out.shape[0]
+    for w in range(nw):
+        out[w] = expanded[w] = _ZERO
     add(out, n)
-    add(out, n + 1)  # the target relays nothing
-    stack[0] = n
-    top = 1
-    while top > 0:
-        top -= 1
-        a = stack[top]
+    add(out, n + 1)
+    add(expanded, n + 1)  # the target relays nothing
+    w = 0
+    while w < nw and not covers(out, goal):
+        pending = out[w] & ~expanded[w]
+        if not pending:
+            w += 1
+            continue
+        a = w * 64 + lowest(pending)
+        add(expanded, a)
         xa, ya, za = qx[a], qy[a], pz[a]
-        for w in range(out.shape[0]):
-            lo = w * 64
+        for v in range(nw):
+            lo = v * 64
             row = np.uint64(0)
             for b in range(lo, min(mp, lo + 64)):
                 dx = xa - qx[b]
@@ -120,9 +131,8 @@ def predict_routes(
                 dz = za - pz[b]
                 row |= (_ONE if dx * dx + dy * dy + dz * dz <= disc2[a, b] else _ZERO) << (
                     np.uint64(b - lo))
-            new = row & ~out[w]
-            out[w] |= new
-            top = push_new(stack, top, w, new)
+            out[v] |= row
+        w = 0  # the new nodes may lie in any word
     drop(out, n + 1)
 
 
@@ -130,7 +140,7 @@ def predict_routes(
 def check_continuously(
     k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
     on_route: np.ndarray, pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray,
-    disc2: np.ndarray, routed_next: np.ndarray, routed_step: np.ndarray, stack: np.ndarray,
+    disc2: np.ndarray, routed_next: np.ndarray, routed_step: np.ndarray, expanded: np.ndarray,
     deciding: np.ndarray, last_change: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
     wp_end: np.ndarray,
 ) -> bool:
@@ -142,12 +152,16 @@ def check_continuously(
     graph is predicted at each increment up to ``t + t_s``; ``routed_next`` holds the nodes
     routed at all of them, and a searching distributed drone outside it decides now (its
     clock restarts). Returns whether any drone decides this step.
+
+    A later increment's search only has to reach the nodes routed at every earlier one (the
+    goal of :func:`predict_routes`): the others are out of ``routed_next`` already.
     """
-    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, stack, on_route,
-                   wp, wp_next, wp_end)
+    first_nodes(routed_step, hx.shape[0] + 2)  # the first increment's goal: every node
+    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, expanded, on_route,
+                   wp, wp_next, wp_end, routed_step)
     for s in range(2, p.ts_steps + 1):
-        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, stack,
-                       on_route, wp, wp_next, wp_end)
+        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, expanded,
+                       on_route, wp, wp_next, wp_end, routed_next)
         for w in range(routed_next.shape[0]):
             routed_next[w] &= routed_step[w]
     any_deciding = False
@@ -254,7 +268,7 @@ def due(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray
         return any_deciding
     return check_continuously(k, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.on_route, obs.pz,
                               p, ws.qx, ws.qy, ws.disc2, ws.routed_next, ws.routed_step,
-                              ws.stack, deciding, obs.last_change, obs.wp, obs.wp_next,
+                              ws.expanded, deciding, obs.last_change, obs.wp, obs.wp_next,
                               obs.wp_end)
 
 
@@ -264,9 +278,10 @@ def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
     """Eq. 9's direction of every deciding drone, predicting the routes a sensing period ahead
     unless the continuous check already did."""
     if p.conb_check != CONTINUOUS:
+        first_nodes(ws.routed_step, obs.hx.shape[0] + 2)  # the goal: every node
         predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, p.ts_steps, ws.qx,
-                       ws.qy, ws.disc2, ws.routed_next, ws.stack, obs.on_route, obs.wp,
-                       obs.wp_next, obs.wp_end)
+                       ws.qy, ws.disc2, ws.routed_next, ws.expanded, obs.on_route, obs.wp,
+                       obs.wp_next, obs.wp_end, ws.routed_step)
     conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
                   p, obs.rc, no_term, vx, vy)
 
