@@ -215,7 +215,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
                         time.perf_counter() - t0))
     checked = [e for e in needed if set(e.figures) & set(range(1, 8))]
     by_preset = {chosen.name: findings}
-    if presets if presets is not None else not quick:
+    if (not quick) if presets is None else presets:
         by_preset, timed = preset_findings(chosen, tables, out / "runs", checked, runs,
                                            workers=workers, scheduler=scheduler,
                                            progress=progress)
