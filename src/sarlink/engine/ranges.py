@@ -194,6 +194,34 @@ def _nodes(p: Params, unit: Params, n: int, target_x: float, target_y: float
     return px, py, pz, fade
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def _records(nr: int, checkpoints: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
+                                                  np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Every range's records and state at the start: its notification step, its cumulative
+    reachability and connected fraction at the checkpoints and their running sums, whether
+    its run goes on, and the step's reachability and connected drones."""
+    return (np.full(nr, -1, dtype=np.int64), np.full((nr, checkpoints), np.nan),
+            np.full((nr, checkpoints), np.nan), np.zeros(nr), np.zeros(nr),
+            np.ones(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_),
+            np.zeros(nr, dtype=np.int64))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _observe(k: int, last: int, positions: np.ndarray, px: np.ndarray, py: np.ndarray,
+             fade: np.ndarray, unit: Params, no_params: np.ndarray,
+             rng_shadow: np.random.Generator, p: Params, in_range: np.ndarray,
+             pass_start: np.ndarray, sensed: np.ndarray, rng_look: np.random.Generator) -> int:
+    """Step ``k``'s positions (a settled team keeps its last traced ones), the radio's fades
+    and the drones' looks; return the drone that first sensed the target now, or -1."""
+    if k <= last:
+        for i in range(positions.shape[1]):
+            px[i] = positions[k, i, 0]
+            py[i] = positions[k, i, 1]
+    if p.sigma > 0.0:
+        lognormal.update(fade, unit, no_params, k, rng_shadow)
+    return sensing.sense(px, py, k, p, in_range, pass_start, sensed, rng_look)
+
+
 @njit(cache=True, error_model="numpy")
 def _staircase(p: Params, unit: Params, target_x: float, target_y: float,
                positions: np.ndarray, end: int, rng_shadow: np.random.Generator,
@@ -222,23 +250,13 @@ def _staircase(p: Params, unit: Params, target_x: float, target_y: float,
     det_step = detector = -1
     reach_key = _INF
     nr = r2s.shape[0]
-    notified = np.full(nr, -1, dtype=np.int64)
-    reach_cum = np.full((nr, cp_steps.shape[0]), np.nan)
-    conn_cum = np.full((nr, cp_steps.shape[0]), np.nan)
-    acc_reach, acc_conn = np.zeros(nr), np.zeros(nr)
+    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable,
+     connected) = _records(nr, cp_steps.shape[0])
     ci = 0
-    going = np.ones(nr, dtype=np.bool_)  # ranges whose run has not stopped
-    reachable = np.zeros(nr, dtype=np.bool_)
-    connected = np.zeros(nr, dtype=np.int64)
     for k in range(end + 1):
         ci = _open_step(k, cp_steps, ci, going, reach_cum, conn_cum, acc_reach, acc_conn)
-        if k <= last:
-            for i in range(n):
-                px[i] = positions[k, i, 0]
-                py[i] = positions[k, i, 1]
-        if shadowed:
-            lognormal.update(fade, unit, no_params, k, rng_shadow)
-        first = sensing.sense(px, py, k, p, in_range, pass_start, sensed, rng_look)
+        first = _observe(k, last, positions, px, py, fade, unit, no_params, rng_shadow, p,
+                         in_range, pass_start, sensed, rng_look)
         if det_step < 0 and first >= 0:
             det_step, detector = k, first
         if k <= last or shadowed:  # a settled team's graph is that of its last traced step
@@ -332,24 +350,14 @@ def _bands(p: Params, unit: Params, target_x: float, target_y: float, positions:
     pass_start = np.zeros(n, dtype=np.int64)
     sensed, counted = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
     det_step = detector = -1
-    notified = np.full(nr, -1, dtype=np.int64)
-    reach_cum = np.full((nr, cp_steps.shape[0]), np.nan)
-    conn_cum = np.full((nr, cp_steps.shape[0]), np.nan)
-    acc_reach, acc_conn = np.zeros(nr), np.zeros(nr)
+    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable,
+     connected) = _records(nr, cp_steps.shape[0])
     ci = 0
-    going = np.ones(nr, dtype=np.bool_)
-    reachable = np.zeros(nr, dtype=np.bool_)
-    connected = np.zeros(nr, dtype=np.int64)
     key = np.empty(mp)
     for k in range(end + 1):
         ci = _open_step(k, cp_steps, ci, going, reach_cum, conn_cum, acc_reach, acc_conn)
-        if k <= last:
-            for i in range(n):
-                px[i] = positions[k, i, 0]
-                py[i] = positions[k, i, 1]
-        if shadowed:
-            lognormal.update(fade, unit, no_params, k, rng_shadow)
-        first = sensing.sense(px, py, k, p, in_range, pass_start, sensed, rng_look)
+        first = _observe(k, last, positions, px, py, fade, unit, no_params, rng_shadow, p,
+                         in_range, pass_start, sensed, rng_look)
         if det_step < 0 and first >= 0:
             det_step, detector = k, first
         new_knower = False
