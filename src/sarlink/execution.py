@@ -184,24 +184,27 @@ _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 
 def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
     """Compile one Numba part in this worker, or load it from Numba's cache: the kernel of a
-    planner's rule and a radio model (``("kernel", planner, radio)``), or the mTSP GA.
+    planner's rule and a radio model (``("kernel", planner, radio)``), the reading of one
+    flight at every range (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
 
-    On a fresh machine every worker would otherwise compile each kernel at its first task
-    (10-30 s of CPU each) and the GA at its first mTSP plan (15 s); compiled once, the parts
-    spread over the workers, the others then load them from the cache.
+    On a fresh machine every worker would otherwise compile each part at its first task
+    (the kernels 10-35 s of CPU each, the reading 18 s, the GA 13 s); compiled once, the
+    parts spread over the workers, the others then load them from the cache.
     """
     adopt_plugins(plugins)
-    if part[0] == "kernel":
-        warm_up(part[1], part[2])
-    else:
+    if part[0] == "mtsp":
         from sarlink.mtsp import grid_cells, solve
 
         solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
+    else:
+        warm_up(part[1], part[2], ranges=part[0] == "ranges")
 
 
 def _parts(tasks: Sequence[_Task]) -> list[tuple[str, ...]]:
-    """The compiled parts ``tasks`` need: one kernel per rule and radio model, and the GA if
-    they plan with it."""
+    """The compiled parts ``tasks`` need, in the order to compile them: the first kernel, the
+    GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
+    (one per rule and radio model), and the reading at every range if a job flies once for
+    several ranges (after the kernels, whose first compile also compiles what they share)."""
     missions = {t.point.hash: t.point.mission for t in tasks}.values()
     kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
     for m in missions:
@@ -209,7 +212,10 @@ def _parts(tasks: Sequence[_Task]) -> list[tuple[str, ...]]:
         kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
                            ("kernel", m.team.planner, m.radio))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
-    return [*kernels.values(), *([("mtsp",)] if ga else [])]
+    shared = next((job[0].point.mission for job in _jobs(tasks) if len(job) > 1), None)
+    order = list(kernels.values())
+    return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
+            *([("ranges", shared.team.planner, shared.radio)] if shared else [])]
 
 
 @contextmanager
