@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import json
 import math
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -204,6 +206,31 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
     for job in jobs:  # together: the same runs of one team at several ranges
         assert len({(t.runs, t.point.params["planner"]) for t in job}) == 1
         assert len({t.point.params["rc"] for t in job}) == len(job)
+
+
+def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
+        tmp_path: Path) -> None:
+    experiment = Experiment.from_dict({
+        "name": "parts", "seed": 1, "runs": 8, "chunk": 4,
+        "mission": {"team": {"drones": 4}},
+        "grid": {"planner": ["conb", "mtsp", "covb"], "rc": [500.0, 1000.0]}})
+    with storage.open_store(tmp_path, experiment) as store:
+        tasks = execution._plan(store, experiment.runs, experiment.chunk)
+    assert execution._parts(tasks) == [
+        ("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
+        ("kernel", "covb", "disc"), ("ranges", "mtsp", "disc")]
+    one = [t for t in tasks if t.point.params["rc"] == 500.0]
+    assert ("ranges", "mtsp", "disc") not in execution._parts(one)
+
+
+def test_warming_up_the_reading_compiles_it() -> None:
+    """In a process of its own: this one has read flights at several ranges already."""
+    code = ("from sarlink.engine import ranges\n"
+            "from sarlink.simulation import warm_up\n"
+            "assert not ranges.critical.signatures\n"
+            "warm_up('mtsp', 'disc', ranges=True)\n"
+            "assert ranges.critical.signatures\n")
+    subprocess.run([sys.executable, "-c", code], check=True)
 
 
 def test_a_one_range_job_flies_as_before_unless_asked_for_the_staircase(
