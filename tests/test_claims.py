@@ -599,8 +599,9 @@ def test_every_claim_decides_on_the_bland_and_a_noisy_world() -> None:
     bland = world()()
     noisy = world(reach=NOISE, immediate=flag(0.4, shared=False),
                   t_notify=times(0.5, 0.7, 0.9, shared=False))()
-    plans = pd.DataFrame({"drones": [2, 4], "cells": [64, 64], "longest_s": [3800.0, 2000.0],
-                          "flight_time": [4000.0, 4000.0]})
+    plans = pd.DataFrame({"drones": [2, 4], "plans": [1, 1], "cells": [64, 64],
+                          "longest_s": [3800.0, 2000.0], "longest_min_s": [3800.0, 2000.0],
+                          "longest_max_s": [3800.0, 2000.0], "flight_time": [4000.0, 4000.0]})
     timings = pd.DataFrame([{"planner": p, "drones": n, "rc": 500.0, "repeat": k,
                              "seconds": 0.01 * (1 + k / 10) * (n if p != "covb" else 1)}
                             for p in ("mtsp", "covb", "conb", "mtsp-conb", "concov")
@@ -626,11 +627,19 @@ def test_the_claims_quote_the_paper_and_are_at_least_forty() -> None:
 
 
 def test_section_4_1_checks_read_the_plans_and_the_area() -> None:
-    good = {"mtsp_plans": pd.DataFrame({"drones": [2], "cells": [64], "longest_s": [3900.0],
-                                        "flight_time": [4000.0]})}
+    def plans(longest: list[float], cells: int = 64) -> dict[str, pd.DataFrame]:
+        return {"mtsp_plans": pd.DataFrame({
+            "drones": [2], "plans": [len(longest)], "cells": [cells],
+            "longest_s": [sum(longest) / len(longest)], "longest_min_s": [min(longest)],
+            "longest_max_s": [max(longest)], "flight_time": [4000.0]})}
+
+    good = plans([3900.0])
     assert claims.mtsp_cells(good).outcome is HOLDS
     assert claims.flight_budget_from_plan(good).outcome is HOLDS
-    short = {"mtsp_plans": good["mtsp_plans"].assign(longest_s=2000.0, cells=100)}
+    assert claims.flight_budget_from_plan(plans([3700.0, 3900.0])).outcome is HOLDS
+    # one plan of the runs' plans does not fit in T_max, though their mean does
+    assert claims.flight_budget_from_plan(plans([3700.0, 4100.0])).outcome is CONTRADICTED
+    short = plans([2000.0], cells=100)
     assert claims.mtsp_cells(short).outcome is CONTRADICTED
     assert claims.flight_budget_from_plan(short).outcome is CONTRADICTED
     assert claims.single_hop_range({}).outcome is HOLDS  # 4000 m / √2 = 2828 m

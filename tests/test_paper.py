@@ -23,8 +23,9 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError
 from sarlink.cli import app
-from sarlink.config import READINGS
+from sarlink.config import READINGS, Mission
 from sarlink.engine.rules import COVB
+from sarlink.engine.streams import plan_seed
 from sarlink.metrics import MEASURES, run_values, summarize, wilson
 from sarlink.paper import ReproductionResult, check_all, load_runs, reproduce, tally
 from sarlink.paper import findings as claims
@@ -34,6 +35,8 @@ from sarlink.paper.experiments import (
     EXPERIMENTS,
     PLAN_TIME_PLANNERS,
     RANGES,
+    TD_LONG,
+    mtsp_plans,
     plan_time_missions,
 )
 from sarlink.paper.figures import FIGURES, fig3
@@ -410,3 +413,30 @@ def test_fig9_draws_the_other_planners_solid_beside_the_paper_planners_dashed() 
     assert len(dashed) == len(PAPER_PLANNERS) * 2 * len(RANGES)
     (_, values), = FIGURES[9].values(paper, paper, others)
     assert len(values) == (len(PAPER_PLANNERS) + len(PATTERNS)) * 2 * len(RANGES) * len(DRONES) * 2
+
+
+def _longest_flight(routes: tuple[np.ndarray, ...], bs: tuple[float, float],
+                    speed: float) -> float:
+    """The longest route's flight time, from the BS through its waypoints."""
+    return max(float(np.hypot(*np.diff(np.vstack([bs, r]), axis=0).T).sum()) for r in routes
+               ) / speed
+
+
+def test_the_plan_table_describes_the_plans_the_runs_fly() -> None:
+    """Under per-run plans, the 2-drone row summarises the runs' own routes (measured here
+    from their waypoints); under shared plans, the one plan of the mission's seed."""
+    mission = Mission.build(planner="mtsp", drones=2, horizon=TD_LONG)
+    runs = pd.DataFrame({"planner": "mtsp", "drones": 2, "seed": 7, "run": [0, 1, 2],
+                         "mtsp_plan": "per-run"})
+    row = mtsp_plans(runs).set_index("drones").loc[2]
+    mtsp = get_planner("mtsp")
+    flights = [_longest_flight(mtsp.steering(mission.replace(plan_seed=plan_seed(7, k))).routes,
+                               mission.area.bs_xy, mission.team.speed) for k in range(3)]
+    assert row["plans"] == 3 and row["cells"] == 64
+    assert row["longest_min_s"] == pytest.approx(min(flights), rel=1e-9)
+    assert row["longest_max_s"] == pytest.approx(max(flights), rel=1e-9)
+    assert row["longest_s"] == pytest.approx(np.mean(flights), rel=1e-9)
+    shared = mtsp_plans(runs.assign(mtsp_plan="shared")).set_index("drones").loc[2]
+    one = _longest_flight(mtsp.steering(mission.replace(mtsp_plan="shared")).routes,
+                          mission.area.bs_xy, mission.team.speed)
+    assert shared["plans"] == 1 and shared["longest_s"] == pytest.approx(one, rel=1e-9)

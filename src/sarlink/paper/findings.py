@@ -446,12 +446,17 @@ def mtsp_cells(t: PairedTables, s: Settings) -> Verdict:
        "T_max is the duration of the 2-drone mTSP plan.", ("mtsp_plans",))
 def flight_budget_from_plan(t: PairedTables, s: Settings) -> Verdict:
     """The flight time of the longest tour of the 2-drone mTSP plan lies between 90 % of the
-    flight budget T_max and T_max (it fits, and T_max is not much more)."""
+    flight budget T_max and T_max (it fits, and T_max is not much more); with a plan per run,
+    their mean does, and every plan fits."""
     v = Verdict()
     row = t.tables["mtsp_plans"].set_index("drones").loc[2]
     longest, budget = float(row["longest_s"]), float(row["flight_time"])
-    v.test(Outcome.HOLDS if 0.9 * budget <= longest <= budget else Outcome.CONTRADICTED,
-           f"longest tour of the 2-drone plan {longest:.0f} s, T_max {budget:g} s "
+    fits = float(row["longest_max_s"]) <= budget
+    plans = int(row["plans"])
+    spread = (f" (mean of {plans} plans, {row['longest_min_s']:.0f}-{row['longest_max_s']:.0f} s)"
+              if plans > 1 else "")
+    v.test(Outcome.HOLDS if 0.9 * budget <= longest and fits else Outcome.CONTRADICTED,
+           f"longest tour of the 2-drone plan {longest:.0f} s{spread}, T_max {budget:g} s "
            f"({longest / budget:.1%})")
     return v
 
