@@ -188,14 +188,19 @@ def test_a_sweep_over_rc_equals_a_sweep_per_range(planner: str, staircase: bool,
     assert (varied.max(axis=1) > 1).all()  # each run's outcome depends on the range
 
 
-def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
+def _tasks(folder: Path, planners: list[str]) -> list:
+    """The tasks of 8 runs, in chunks of 4, of 4 drones of each planner at two ranges."""
     experiment = Experiment.from_dict({
-        "name": "jobs", "seed": 1, "runs": 8, "chunk": 4,
+        "name": "tasks", "seed": 1, "runs": 8, "chunk": 4,
         "mission": {"team": {"drones": 4}},
-        "grid": {"planner": ["covb", "conb", "mtsp"], "rc": [500.0, 1000.0]}})
-    with storage.open_store(tmp_path, experiment) as store:
-        tasks = execution._plan(store, experiment.runs, experiment.chunk)
-        jobs = execution._jobs(tasks)
+        "grid": {"planner": planners, "rc": [500.0, 1000.0]}})
+    with storage.open_store(folder, experiment) as store:
+        return execution._plan(store, experiment.runs, experiment.chunk)
+
+
+def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
+    tasks = _tasks(tmp_path, ["covb", "conb", "mtsp"])
+    jobs = execution._jobs(tasks)
     sizes = sorted((job[0].point.params["planner"], len(job)) for job in jobs)
     assert sizes == [("conb", 1)] * 4 + [("covb", 2)] * 2 + [("mtsp", 2)] * 2
 
@@ -210,12 +215,7 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
 
 def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
-    experiment = Experiment.from_dict({
-        "name": "parts", "seed": 1, "runs": 8, "chunk": 4,
-        "mission": {"team": {"drones": 4}},
-        "grid": {"planner": ["conb", "mtsp", "covb"], "rc": [500.0, 1000.0]}})
-    with storage.open_store(tmp_path, experiment) as store:
-        tasks = execution._plan(store, experiment.runs, experiment.chunk)
+    tasks = _tasks(tmp_path, ["conb", "mtsp", "covb"])
     assert execution._parts(tasks) == [
         ("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
         ("kernel", "covb", "disc"), ("ranges", "mtsp", "disc")]
