@@ -246,3 +246,16 @@ def test_files_written_before_checkpoints_were_stored_read_the_same(tmp_path: Pa
     assert list(before.checkpoints.iloc[0])[-3:] == [350.0, 400.0, 420.0]
     pd.testing.assert_frame_equal(summarize(after, td=[100, 420]),
                                   summarize(before, td=[100, 420]))
+
+
+def test_result_files_read_with_pandas_as_sarlink_loads_them(tmp_path: Path) -> None:
+    """The files are plain Parquet (written without dictionary pages or statistics): pandas
+    reads every one, each parameter column one value, the rows those ``load`` gives."""
+    fill(tmp_path, experiment())
+    frames = [pd.read_parquet(path) for path in files(tmp_path)]
+    assert all(f["planner"].nunique() == 1 and f["drones"].eq(3).all() for f in frames)
+    read = pd.concat(frames).sort_values(["planner", "run"]).reset_index(drop=True)
+    loaded = load(tmp_path).sort_values(["planner", "run"]).reset_index(drop=True)
+    assert len(read) == 24
+    for name in ("run", "planner", "t_detect", "t_notify", "target_x"):
+        pd.testing.assert_series_equal(read[name], loaded[name], check_dtype=False)

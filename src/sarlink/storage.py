@@ -93,6 +93,22 @@ def _param_columns() -> dict[str, _Column]:
     return columns
 
 
+_REPEATED: dict[tuple[str, str, int], pa.Array] = {}
+
+
+def _repeated(name: str, value: Any, n: int) -> pa.Array:
+    """Parameter ``name``'s column of ``n`` rows of ``value``: the same for every task of a
+    point, and for the points of a grid but one parameter, so built once (arrays are
+    immutable; keyed by ``repr``, which tells ``-0.0`` from ``0.0``)."""
+    key = (name, repr(value), n)
+    column = _REPEATED.get(key)
+    if column is None:
+        if len(_REPEATED) >= 4096:
+            _REPEATED.clear()
+        column = _REPEATED[key] = pa.repeat(pa.scalar(value, _param_columns()[name].type), n)
+    return column
+
+
 def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa.Table:
     """Runs of ``mission`` as one tidy table: seed, run, every flat parameter, the outcomes.
 
@@ -109,8 +125,7 @@ def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa
     columns = {
         "seed": outcomes["seed"],
         "run": outcomes["run"],
-        **{name: pa.repeat(pa.scalar(params[name], col.type), n)
-           for name, col in _param_columns().items()},
+        **{name: _repeated(name, params[name], n) for name in _param_columns()},
         **{name: outcomes[name] for name in outcomes.column_names if name not in ("seed", "run")},
     }
     meta = {_POINT_KEY: mission_hash(mission).encode(), _SEED_KEY: str(seed).encode(),
@@ -187,6 +202,12 @@ def _write_atomic(path: Path, write: Callable[[IO[bytes]], object]) -> None:
             os.close(folder)
 
 
+_LEAN = {"use_dictionary": False, "write_statistics": False}
+"""How result files are written beyond the defaults: no dictionary pages (a point's parameter
+columns repeat one value, which snappy compresses as well) and no column statistics (nothing
+filters on them): two fifths of a file's CPU at 50 rows, for files read back the same."""
+
+
 @dataclass(frozen=True)
 class Point:
     """One grid point of an experiment: its grid values, mission and folder name."""
@@ -247,7 +268,7 @@ class Store:
         folder.mkdir(parents=True, exist_ok=True)
         _write_atomic(folder / _file_name(runs),
                       lambda fh: pq.write_table(table, fh, compression="snappy",
-                                                write_page_checksum=True))
+                                                write_page_checksum=True, **_LEAN))
         self._tables.setdefault(point.hash, []).append((runs, table))
 
     def frame(self, runs: int) -> pd.DataFrame:
