@@ -152,6 +152,17 @@ def _conb_arrays(n: int, rc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray,
             np.zeros(words(m), dtype=np.uint64))
 
 
+def _seen(px: np.ndarray, py: np.ndarray, pz: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+          mode: np.ndarray, on_route: np.ndarray, last_change: np.ndarray,
+          rc: float) -> Observation:
+    """What ConB's check reads of a team without routes (links, pairs and bitsets unread)."""
+    n, m = hx.shape[0], hx.shape[0] + 2
+    bits = np.zeros((m, words(m)), dtype=np.uint64)
+    return Observation(px, py, pz, hx, hy, mode, on_route, last_change,
+                       np.zeros(n, dtype=np.bool_), bits, bits, bits[0], bits[0], rc,
+                       *_no_routes(n))
+
+
 @given(team=teams(), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
        altitude=st.sampled_from([0.0, 120.0]))
 def test_predict_routes_is_a_search_on_extrapolated_positions(
@@ -213,8 +224,9 @@ def test_the_continuous_check_decides_for_a_loss_at_any_increment(
     last_change = np.full(n, 3, dtype=np.int64)
     k = 7
     any_deciding = check_continuously(
-        k, px, py, hx, hy, np.array(modes, dtype=np.int8), np.array(on_route[:n]), pz, p, qx, qy,
-        disc2, routed_next, routed_step, expanded, decide, last_change, *_no_routes(n))
+        k, p, _seen(px, py, pz, hx, hy, np.array(modes, dtype=np.int8), np.array(on_route[:n]),
+                    last_change, rc),
+        conb.Workspace(qx, qy, disc2, routed_next, routed_step, expanded), decide, True)
     always = set.intersection(*(_predicted(xy, hx, hy, modes, p, s, 0.0)
                                 for s in range(1, ts + 1)))
     assert members(routed_next) == always
@@ -234,14 +246,37 @@ def test_the_continuous_check_sees_a_loss_at_the_last_increment() -> None:
     px, py, pz = node_arrays(xy, 2)
     qx, qy, disc2, routed_next, expanded = _conb_arrays(2, 1000.0)
     deciding, last_change = np.zeros(2, dtype=np.bool_), np.zeros(2, dtype=np.int64)
-    assert check_continuously(9, px, py, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
-                              np.array([SEARCHING] * 2, dtype=np.int8), np.zeros(2, np.bool_),
-                              pz, p, qx, qy, disc2, routed_next, routed_next.copy(), expanded,
-                              deciding, last_change, *_no_routes(2))
+    obs = _seen(px, py, pz, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
+                np.array([SEARCHING] * 2, dtype=np.int8), np.zeros(2, np.bool_), last_change,
+                1000.0)
+    ws = conb.Workspace(qx, qy, disc2, routed_next, routed_next.copy(), expanded)
+    assert check_continuously(9, p, obs, ws, deciding, True)
     assert deciding.tolist() == [True, False]
     assert last_change.tolist() == [9, 0]
     assert members(routed_next) == {1, 2}
 
+
+
+@given(team=teams(), deciding=st.lists(st.booleans(), min_size=8, max_size=8))
+def test_the_check_when_off_adds_no_drone(
+        team: tuple[list[tuple[float, float]], list[float], list[int]],
+        deciding: list[bool]) -> None:
+    """Off (a periodic check, or ConCov at α = 1) there are no increments: every node counts
+    as routed, no drone is added, no clock restarts, and the answer is whether any drone was
+    already deciding."""
+    xy, angles, modes = team
+    n = len(angles)
+    px, py, pz = node_arrays(xy, n)
+    hx, hy = _headings(angles)
+    qx, qy, disc2, routed_next, expanded = _conb_arrays(n, 1000.0)
+    decide, last_change = np.array(deciding[:n]), np.full(n, 3, dtype=np.int64)
+    obs = _seen(px, py, pz, hx, hy, np.array(modes, dtype=np.int8), np.zeros(n, np.bool_),
+                last_change, 1000.0)
+    ws = conb.Workspace(qx, qy, disc2, routed_next, routed_next.copy(), expanded)
+    assert check_continuously(7, P, obs, ws, decide, False) == any(deciding[:n])
+    assert decide.tolist() == deciding[:n]
+    assert last_change.tolist() == [3] * n
+    assert members(routed_next) == set(range(n + 2))
 
 # -- ConB's direction (Eqs. 9-11) -------------------------------------------------------------
 

@@ -103,10 +103,9 @@ def predict_routes(
         if j < n and mode[j] != LANDED:
             qx[j] += ahead * hx[j]
             qy[j] += ahead * hy[j]
-    if p.mtsp_prediction == PREDICT_PATHS:
-        for j in range(n):
-            if on_route[j] and mode[j] == SEARCHING:
-                qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
+    for j in range(n if p.mtsp_prediction == PREDICT_PATHS else 0):  # a loop, not a branch
+        if on_route[j] and mode[j] == SEARCHING:
+            qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
     nw = out.shape[0]
     for w in range(nw):
         out[w] = expanded[w] = _ZERO
@@ -136,40 +135,42 @@ def predict_routes(
     drop(out, n + 1)
 
 
-@njit(cache=True, error_model="numpy")
-def check_continuously(
-    k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray, mode: np.ndarray,
-    on_route: np.ndarray, pz: np.ndarray, p: Params, qx: np.ndarray, qy: np.ndarray,
-    disc2: np.ndarray, routed_next: np.ndarray, routed_step: np.ndarray, expanded: np.ndarray,
-    deciding: np.ndarray, last_change: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
-    wp_end: np.ndarray,
-) -> bool:
-    """ConB's connectivity check read as Section 3.2 words it (``conb_check = continuous``).
+@njit(cache=True, inline="always", error_model="numpy")
+def check_continuously(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
+                       on: bool) -> bool:
+    """ConB's connectivity check read as Section 3.2 words it (``conb_check = continuous``),
+    when ``on``; returns whether any drone decides this step.
 
     "Within every sensing period the connectivity of a given UAV i to the BS ... is checked at
     incremental time intervals ... If at any time within the sensing period the UAV i would
     lose its connectivity to the BS, direction change would be initiated": every step, the
-    graph is predicted at each increment up to ``t + t_s``; ``routed_next`` holds the nodes
+    graph is predicted at each increment up to ``t + t_s``; ``ws.routed_next`` holds the nodes
     routed at all of them, and a searching distributed drone outside it decides now (its
-    clock restarts). Returns whether any drone decides this step.
+    clock restarts). Off, there are no increments: every node counts as routed and no drone
+    is added.
 
-    A later increment's search only has to reach the nodes routed at every earlier one (the
-    goal of :func:`predict_routes`): the others are out of ``routed_next`` already.
+    An increment's search only has to reach the nodes routed at every earlier one (the goal
+    of :func:`predict_routes`; at the first, every node): the others are out of
+    ``routed_next`` already.
+
+    Written for Numba's reference-count pruner (docs/architecture.md): no plain call, and
+    the check's off state is a loop of no increments rather than a branch, as the pruner
+    keeps the counts of an array whose last use lies in one arm of a branch.
     """
-    first_nodes(routed_step, hx.shape[0] + 2)  # the first increment's goal: every node
-    predict_routes(px, py, hx, hy, mode, pz, p, 1, qx, qy, disc2, routed_next, expanded, on_route,
-                   wp, wp_next, wp_end, routed_step)
-    for s in range(2, p.ts_steps + 1):
-        predict_routes(px, py, hx, hy, mode, pz, p, s, qx, qy, disc2, routed_step, expanded,
-                       on_route, wp, wp_next, wp_end, routed_next)
-        for w in range(routed_next.shape[0]):
-            routed_next[w] &= routed_step[w]
+    n = obs.hx.shape[0]
+    first_nodes(ws.routed_next, n + 2)  # before the first increment: every node
+    for s in range(1, p.ts_steps + 1 if on else 1):
+        predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, s, ws.qx, ws.qy,
+                       ws.disc2, ws.routed_step, ws.expanded, obs.on_route, obs.wp, obs.wp_next,
+                       obs.wp_end, ws.routed_next)
+        for w in range(ws.routed_next.shape[0]):
+            ws.routed_next[w] &= ws.routed_step[w]
     any_deciding = False
-    for i in range(hx.shape[0]):
-        if not deciding[i] and not on_route[i] and mode[i] == SEARCHING and not bit(
-                routed_next[i >> 6], i):
+    for i in range(n):
+        if not deciding[i] and not obs.on_route[i] and obs.mode[i] == SEARCHING and not bit(
+                ws.routed_next[i >> 6], i):
             deciding[i] = True
-            last_change[i] = k
+            obs.last_change[i] = k
         any_deciding |= deciding[i]
     return any_deciding
 
@@ -261,15 +262,7 @@ def prepare(p: Params, obs: Observation) -> Workspace:
 def due(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray) -> bool:
     """With ``conb_check = continuous``, the drones that decide now because a loss of their
     route is predicted within the sensing period; returns whether any drone decides."""
-    if p.conb_check != CONTINUOUS:
-        any_deciding = False
-        for i in range(deciding.shape[0]):
-            any_deciding |= deciding[i]
-        return any_deciding
-    return check_continuously(k, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.on_route, obs.pz,
-                              p, ws.qx, ws.qy, ws.disc2, ws.routed_next, ws.routed_step,
-                              ws.expanded, deciding, obs.last_change, obs.wp, obs.wp_next,
-                              obs.wp_end)
+    return check_continuously(k, p, obs, ws, deciding, p.conb_check == CONTINUOUS)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

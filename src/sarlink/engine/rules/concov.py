@@ -16,6 +16,7 @@ from sarlink.engine.geometry import unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     CONNECTED_NONE,
+    CONTINUOUS,
     COVB_PRINTED,
     FALLBACK_CONNECTIVITY,
     Params,
@@ -61,12 +62,8 @@ def prepare(p: Params, obs: Observation) -> Workspace:
 @njit(cache=True, inline="always", error_model="numpy")
 def due(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray) -> bool:
     """ConB's continuous check, when the connectivity term counts (``α < 1``)."""
-    if p.alpha < 1.0:
-        return conb.due(k, p, obs, ws.conb, deciding)
-    any_deciding = False
-    for i in range(deciding.shape[0]):
-        any_deciding |= deciding[i]
-    return any_deciding
+    return conb.check_continuously(k, p, obs, ws.conb, deciding,
+                                   p.alpha < 1.0 and p.conb_check == CONTINUOUS)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
