@@ -216,11 +216,11 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
 def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
     tasks = _tasks(tmp_path, ["conb", "mtsp", "covb"])
-    assert execution._parts(tasks) == [
+    assert execution._parts(execution._jobs(tasks)) == [
         ("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
         ("kernel", "covb", "disc"), ("ranges", "mtsp", "disc")]
     one = [t for t in tasks if t.point.params["rc"] == 500.0]
-    assert ("ranges", "mtsp", "disc") not in execution._parts(one)
+    assert ("ranges", "mtsp", "disc") not in execution._parts(execution._jobs(one))
 
 
 def test_warming_up_the_reading_compiles_it() -> None:

@@ -200,19 +200,19 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
         warm_up(part[1], part[2], ranges=part[0] == "ranges")
 
 
-def _parts(tasks: Sequence[_Task]) -> list[tuple[str, ...]]:
-    """The compiled parts ``tasks`` need, in the order to compile them: the first kernel, the
+def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
+    """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
     (one per rule and radio model), and the reading at every range if a job flies once for
     several ranges (after the kernels, whose first compile also compiles what they share)."""
-    missions = {t.point.hash: t.point.mission for t in tasks}.values()
+    missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()
     kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
     for m in missions:
         rule = get_planner(m.team.planner).rule
         kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
                            ("kernel", m.team.planner, m.radio))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
-    shared = next((job[0].point.mission for job in _jobs(tasks) if len(job) > 1), None)
+    shared = next((job[0].point.mission for job in jobs if len(job) > 1), None)
     order = list(kernels.values())
     return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
             *([("ranges", shared.team.planner, shared.radio)] if shared else [])]
@@ -248,10 +248,10 @@ class _Local:
     def __init__(self, pool: ProcessPoolExecutor, count: int) -> None:
         self.pool, self.count = pool, count
 
-    def compile(self, tasks: Sequence[_Task]) -> None:
-        """Compile the parts ``tasks`` need on all workers at once (with one worker, each
+    def compile(self, jobs: Sequence[_Job]) -> None:
+        """Compile the parts ``jobs`` need on all workers at once (with one worker, each
         task compiles what it needs when it needs it)."""
-        parts = _parts(tasks)
+        parts = _parts(jobs)
         if self.count > 1 and len(parts) > 1:
             plugins = plugins_in_code()
             for future in [self.pool.submit(_compile, part, plugins) for part in parts]:
@@ -421,7 +421,7 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
                         for store, (experiment, _) in zip(stores, jobs, strict=True))
             name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
             if isinstance(pool, _Local):
-                pool.compile(tasks)
+                pool.compile(batches)
             with _progress_bar(progress and sys.stdout.isatty()) as bar, \
                     closing(pool.results(batches)) as results:
                 shown = bar.add_task(name, total=total,

@@ -58,8 +58,9 @@ def warm_up(planner: str, radio: str, *, ranges: bool = False) -> None:
     route = (np.array([mission.area.bs_xy]),)
     if ranges:
         Prepared.build(mission, Steering(rule=rule, routes=route)).run_ranges(0, 0, (1.0, 2.0))
-    else:
-        Prepared.build(mission, Steering(rule=rule, routes=() if rule else route)).run(0, 0)
+        return
+    routes = () if rule is not None else route
+    Prepared.build(mission, Steering(rule=rule, routes=routes)).run(0, 0)
 
 
 def prepare(mission: Mission) -> Prepared:
