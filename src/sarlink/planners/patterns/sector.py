@@ -52,7 +52,7 @@ def spokes(search: Search, phase: float, reach: float) -> np.ndarray:
         edge = search.area.exit(bs, angle)
         ends.append(bs + (edge - bs) * min(1.0, reach / max(float(np.hypot(*(edge - bs))),
                                                              1e-12)))
-    return np.array(ends)
+    return search.area.clamp(np.array(ends))  # bs + (edge - bs) may round past the edge
 
 
 def _sectors(search: Search, ends: np.ndarray) -> list[list[np.ndarray]]:
