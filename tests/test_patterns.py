@@ -13,7 +13,7 @@ import re
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -150,8 +150,16 @@ def test_every_route_stays_in_the_area_ends_at_the_bs_and_fits_the_budget(
         assert flight_length(search.bs, route) <= search.budget + 1e-6
 
 
+ROUNDS_PAST_THE_EDGE = Mission.build(
+    drones=1, size=2648.825857110521, r=322.0, flight_time=4000.0, horizon=4000.0,
+    bs=(0.0, 0.2265625 * 2648.825857110521))
+"""Found by hypothesis in CI: a sector spoke's end, bs + (edge - bs) * 1.0, rounded past the
+area's edge."""
+
+
 @pytest.mark.parametrize("name", NAMES)
 @given(mission=searches)
+@example(mission=ROUNDS_PAST_THE_EDGE)
 def test_within_budget_a_plan_is_flown_whole(name: str, mission: Mission) -> None:
     search = Search.of(mission)
     plan = PLANS[name](search)
