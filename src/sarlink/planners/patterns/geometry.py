@@ -1,8 +1,8 @@
 """Plane geometry the search patterns share: the area, polylines and the flight budget.
 
 Every pattern asks the area only what this module's :class:`Rect` answers (inset, clamp, where
-a ray leaves it, whether points lie in it), so that another shape of area needs another
-``Rect`` and no edit of the patterns' logic. A route here is what the engine flies: waypoints
+a ray leaves it, whether points lie in it); an area on the map is the ``Rect`` of its bounding
+box, and :mod:`.polygon` clips the routes to it. A route here is what the engine flies: waypoints
 of shape ``(k, 2)`` after take-off from the BS, the last one the BS.
 """
 

@@ -2,9 +2,10 @@
 
 IAMSAR divides a large area into sub-areas, one per search unit; each unit starts in a corner
 of its sub-area, half a track space inside both sides, and flies legs parallel to the long
-sides, one track space S apart. Here the tracks are laid over the whole area (the first and
-last half a track space inside its edges, the last moved inwards when the width is not a
-multiple of S) and split among the drones: with no more drones than tracks each drone gets a
+sides, one track space S apart. Here the tracks are laid over the whole area (along y on the
+square; on the map, along the long sides of the area's bounding box), the first and last half
+a track space inside its edges, the last moved inwards when the width is not a
+multiple of S, and split among the drones: with no more drones than tracks each drone gets a
 band of whole tracks; with more, each track is cut into equal pieces, one per drone. Legs run
 the sub-area's whole length, edge to edge, so that a definite-range sensor (S = 2 r) covers
 every point, the corners included. Each drone enters at the corner of its sub-area that makes
@@ -14,12 +15,13 @@ its flight from and back to the BS shortest (docs/model.md, Search patterns).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from sarlink.planners.patterns.base import Search
-from sarlink.planners.patterns.geometry import close_at, flight_length
+from sarlink.planners.patterns.geometry import Rect, close_at, flight_length
 
 if TYPE_CHECKING:
     from sarlink.config import Mission
@@ -55,8 +57,12 @@ def _mower(xs: np.ndarray, y0: float, y1: float) -> np.ndarray:
 
 def plan(search: Search) -> tuple[np.ndarray, ...]:
     """Every drone's parallel-track route over its sub-area, from and back to the BS (not yet
-    fitted to the flight budget)."""
+    fitted to the flight budget), the legs parallel to the area's long sides."""
     area = search.area
+    if area.x1 - area.x0 > area.y1 - area.y0:  # planned with x and y swapped, then back
+        swapped = replace(search, area=Rect(area.y0, area.x0, area.y1, area.x1),
+                          bs=(search.bs[1], search.bs[0]))
+        return tuple(np.ascontiguousarray(route[:, ::-1]) for route in plan(swapped))
     xs = tracks(area.x0, area.x1, search.spacing)
     out = []
     for band, f0, f1 in _shares(search.drones, len(xs)):

@@ -49,7 +49,7 @@ def spokes(search: Search, phase: float, reach: float) -> np.ndarray:
     count = n * math.ceil(math.ceil(sweep / gap - 1e-9) / n)
     ends = []
     for angle in first + sweep - sweep * (np.arange(count) + phase) / count:
-        edge = search.area.exit(bs, angle)
+        edge = search.exit(angle)
         ends.append(bs + (edge - bs) * min(1.0, reach / max(float(np.hypot(*(edge - bs))),
                                                              1e-12)))
     return search.area.clamp(np.array(ends))  # bs + (edge - bs) may round past the edge
