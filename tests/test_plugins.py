@@ -27,6 +27,7 @@ from sarlink import (
     sweep,
 )
 from sarlink.engine import radios
+from sarlink.engine.streams import run_streams
 from sarlink.planners import registry
 
 PLUGINS = Path(__file__).parent / "plugins"
@@ -34,6 +35,7 @@ sys.path.insert(0, str(PLUGINS))
 import bad  # noqa: E402
 from covb_again import PLANNER  # noqa: E402
 from radios_outside import CUT, FULL, HALF  # noqa: E402
+from random_walk import RANDOM_WALK  # noqa: E402
 
 
 @pytest.fixture(autouse=True)
@@ -64,6 +66,22 @@ def test_covb_written_outside_flies_exactly_as_the_built_in(drones: int, rc: flo
         plug_in = simulate(mission.replace(planner="covb-again"), seed=5, run=run,
                            trajectory=True)
         assert _same(built_in, plug_in)
+
+
+def test_a_rule_draws_from_its_own_stream_of_seed_and_run() -> None:
+    """A random walk's first headings are the first draws of the run's rule stream (numpy's
+    own generator from ``(seed, run)``); the run is the same drawn again, another run not."""
+    register_planner(RANDOM_WALK)
+    mission = Mission.build(planner="random-walk", drones=4, horizon=300.0)
+    first = simulate(mission, seed=5, run=2, trajectory=True)
+    headings = first.trajectory.headings
+    k = next(k for k in range(1, len(headings)) if not np.array_equal(headings[k],
+                                                                     headings[k - 1]))
+    np.testing.assert_allclose(np.mod(headings[k], 2 * np.pi),
+                               2 * np.pi * run_streams(5, 2).rule.random(4), rtol=0, atol=1e-12)
+    assert _same(first, simulate(mission, seed=5, run=2, trajectory=True))
+    other = simulate(mission, seed=5, run=3, trajectory=True)
+    assert not np.array_equal(first.trajectory.positions, other.trajectory.positions)
 
 
 @pytest.mark.parametrize("planner", ["mtsp", "covb", "conb"])

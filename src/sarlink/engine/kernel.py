@@ -56,7 +56,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     pos0: np.ndarray, heading0: np.ndarray, wp: np.ndarray, wp_start: np.ndarray,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-                    edges: np.ndarray, nav: np.ndarray, far: float) -> RunRecord:
+                    rng_rule: np.random.Generator, edges: np.ndarray, nav: np.ndarray,
+                    far: float) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
@@ -99,7 +100,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
     goal_x, goal_y = np.full(n, np.nan), np.full(n, np.nan)  # that point, on a polygon area
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
-                      spread, radio_nominal(p, rp), wp, wp_next, wp_end)
+                      spread, radio_nominal(p, rp), wp, wp_next, wp_end, rng_rule)
     ws = rule_prepare(p, obs)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)

@@ -57,3 +57,6 @@ class Observation(NamedTuple):
     """Index in ``wp`` of every drone's next waypoint (int64)."""
     wp_end: np.ndarray
     """One past the index of every drone's last waypoint (int64)."""
+    rng: np.random.Generator
+    """The rule's own random stream, from ``(seed, run)`` only (no other part of the run draws
+    from it, so a rule's draws change nothing else): draw from it in the hooks."""

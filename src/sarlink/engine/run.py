@@ -132,8 +132,8 @@ class Prepared:
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
                 takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
                                  streams.takeoff), self.waypoints, self.wp_start,
-                self.cp_steps, streams.turn, streams.shadow, streams.look, self.edges, self.nav,
-                self.far)
+                self.cp_steps, streams.turn, streams.shadow, streams.look, streams.rule,
+                self.edges, self.nav, self.far)
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                traced_at: float | None = None) -> RunRecord:

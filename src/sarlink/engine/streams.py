@@ -20,6 +20,7 @@ class Streams(NamedTuple):
     look: np.random.Generator  # imperfect-sensing looks
     takeoff: np.random.Generator  # take-off headings (readings.takeoff random, jitter)
     plan: np.random.Generator  # the seed of a run's own mTSP plan (readings.mtsp_plan per-run)
+    rule: np.random.Generator  # a distributed rule's own draws (Observation.rng)
 
 
 def run_streams(seed: int, run: int) -> Streams:
