@@ -9,7 +9,14 @@ import math
 
 import numpy as np
 import pytest
-from pettingzoo.test import api_test, parallel_api_test, parallel_seed_test, seed_test
+from matplotlib.colors import to_rgb
+from pettingzoo.test import (
+    api_test,
+    parallel_api_test,
+    parallel_seed_test,
+    render_test,
+    seed_test,
+)
 from typer.testing import CliRunner
 
 from sarlink import ConfigError, Mission, simulate
@@ -52,6 +59,51 @@ def test_aec_api() -> None:
 def test_seeds() -> None:
     seed_test(lambda: env(SMALL), num_cycles=50)
     parallel_seed_test(lambda: parallel_env(SMALL), num_cycles=50)
+
+
+def test_render_modes() -> None:
+    """PettingZoo's own render test: every declared mode, after reset and after steps."""
+    render_test(lambda render_mode=None: env(SMALL, render_mode=render_mode))
+
+
+def _pixel(e, x: float, y: float, image: np.ndarray) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """The colour of the image at the point ``(x, y)`` m of the picture's axes."""
+    px, py = e._renderer.ax.transData.transform((x, y))
+    return image[image.shape[0] - 1 - round(py), round(px)] / 255.0
+
+
+def test_a_picture_shows_the_target_and_each_drone_where_they_are() -> None:
+    """In the rgb_array picture, the pixel at the target's place is the target's red and the
+    one at each drone's place (clear of the others) the colour of what the drone knows."""
+    e = parallel_env(Mission.build(planner="covb", drones=4, rc=500.0, horizon=2000.0),
+                     render_mode="rgb_array")
+    e.reset(seed=3)
+    for _ in range(60):
+        e.step({a: np.array([math.cos(1.6 * int(a[-1])), math.sin(1.6 * int(a[-1]))])
+                for a in e.agents})
+    image = e.render()
+    assert isinstance(image, np.ndarray) and image.dtype == np.uint8 and image.shape[2] == 3
+    obs = e.engine_state.obs
+    n = 4
+    np.testing.assert_allclose(_pixel(e, obs.px[n + 1], obs.py[n + 1], image),
+                               to_rgb("tab:red"), atol=0.02)
+    xy = np.column_stack([obs.px[: n + 2], obs.py[: n + 2]])
+    checked = 0
+    for i in range(n):
+        clear = np.delete(np.hypot(*(xy - xy[i]).T), i).min() > 150.0
+        if clear:
+            colour = "gold" if obs.knows[i] else ("tab:blue" if int(obs.routed[0]) >> i & 1
+                                                 else "0.45")
+            np.testing.assert_allclose(_pixel(e, *xy[i], image), to_rgb(colour), atol=0.02)
+            checked += 1
+    assert checked >= 2
+
+
+def test_bad_render_requests_are_one_line() -> None:
+    with pytest.raises(ConfigError, match="render_mode 'video' is not one of human, rgb_array"):
+        parallel_env(SMALL, render_mode="video")  # type: ignore[arg-type]
+    with pytest.raises(ConfigError, match="before reset"):
+        parallel_env(SMALL, render_mode="rgb_array").render()
 
 
 @pytest.mark.parametrize("planner", ["covb", "conb"])

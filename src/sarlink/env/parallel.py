@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import gymnasium
 import numpy as np
 from gymnasium import spaces
 from pettingzoo import AECEnv, ParallelEnv
@@ -19,6 +20,7 @@ from pettingzoo.utils import parallel_to_aec, wrappers
 from sarlink.config import ConfigError, Mission
 from sarlink.env.actions import ActionKind, allowed, check_actions
 from sarlink.env.episode import EngineState, stepping_mission
+from sarlink.env.render import FPS, RENDER_MODES, Renderer, RenderMode
 from sarlink.env.rewards import Rewards
 from sarlink.env.stepper import Stepper
 from sarlink.result import RunResult
@@ -39,12 +41,16 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
     """A mission whose drones are agents (PettingZoo's parallel API); see :func:`parallel_env`.
     """
 
-    metadata: dict[str, Any] = {"name": "sarlink_v0", "render_modes": [],  # noqa: RUF012
+    metadata: dict[str, Any] = {"name": "sarlink_v0",  # noqa: RUF012
+                                "render_modes": list(RENDER_MODES), "render_fps": FPS,
                                 "is_parallelizable": True}
 
     def __init__(self, mission: Mission | None = None, *, actions: ActionKind = "continuous",
-                 directions: int = 8, neighbours: int = 4, rewards: Rewards | None = None
-                 ) -> None:
+                 directions: int = 8, neighbours: int = 4, rewards: Rewards | None = None,
+                 render_mode: RenderMode | None = None) -> None:
+        if render_mode is not None and render_mode not in RENDER_MODES:
+            raise ConfigError(f"render_mode {render_mode!r} is not one of "
+                              f"{', '.join(RENDER_MODES)} (or None: no pictures)")
         self.mission = Mission() if mission is None else mission
         self.stepper = Stepper(stepping_mission(self.mission), actions, directions, neighbours,
                                Rewards() if rewards is None else rewards)
@@ -54,7 +60,8 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
                                for a in self.possible_agents}
         self.agents: list[str] = []
         self.current_seed, self.current_run = 0, -1
-        self.render_mode = None
+        self.render_mode = render_mode
+        self._renderer = None if render_mode is None else Renderer(self.mission, render_mode)
 
     # -- spaces ---------------------------------------------------------------------------
 
@@ -150,12 +157,22 @@ class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):
         """The run's records, as :func:`sarlink.simulate` returns them (once it has ended)."""
         return self.stepper.live.result()
 
-    def render(self) -> None:
-        """No rendering (``render_modes`` is empty): the environment's output is its records
-        (``info["result"]``, :meth:`result`)."""
+    def render(self) -> np.ndarray | None:
+        """A picture of the current step (:mod:`sarlink.env.render`): the image as an
+        ``(H, W, 3)`` ``uint8`` array with ``render_mode="rgb_array"``, a window with
+        ``"human"``; nothing without a render mode (the records are ``info["result"]``)."""
+        if self._renderer is None:
+            gymnasium.logger.warn("render() without a render_mode: pass render_mode="
+                                  f"{' or '.join(map(repr, RENDER_MODES))} to the environment")
+            return None
+        if self.stepper.episode is None:
+            raise ConfigError("render() before reset(): there is no step to draw yet")
+        return self._renderer.draw(self.stepper.live.state, self.stepper.live.t)
 
     def close(self) -> None:
-        """Nothing to release."""
+        """Close the render window, if any."""
+        if self._renderer is not None:
+            self._renderer.close()
 
 
 def action_space_copy(space: spaces.Space[Any]) -> spaces.Space[Any]:
@@ -167,8 +184,8 @@ def action_space_copy(space: spaces.Space[Any]) -> spaces.Space[Any]:
 
 
 def parallel_env(mission: Mission | None = None, *, actions: ActionKind = "continuous",
-                 directions: int = 8, neighbours: int = 4,
-                 rewards: Rewards | None = None) -> SarlinkParallelEnv:
+                 directions: int = 8, neighbours: int = 4, rewards: Rewards | None = None,
+                 render_mode: RenderMode | None = None) -> SarlinkParallelEnv:
     """``mission`` (default ``Mission()``) as a PettingZoo parallel environment.
 
     Parameters
@@ -185,9 +202,12 @@ def parallel_env(mission: Mission | None = None, *, actions: ActionKind = "conti
     rewards
         The reward terms (:class:`~sarlink.env.rewards.Rewards`; default: the mission's
         outcome only).
+    render_mode
+        ``"rgb_array"``: :meth:`~SarlinkParallelEnv.render` returns the step's picture;
+        ``"human"``: it shows it in a window; ``None``: no pictures.
     """
     return SarlinkParallelEnv(mission, actions=actions, directions=directions,
-                              neighbours=neighbours, rewards=rewards)
+                              neighbours=neighbours, rewards=rewards, render_mode=render_mode)
 
 
 def env(mission: Mission | None = None, **options: Any) -> AECEnv[str, np.ndarray, Any]:
