@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 
 from sarlink import Mission, Scenario, prepare, simulate
 from sarlink.engine.codes import Mode
+from sarlink.engine.streams import run_streams
 
 BS = (2000.0, 2000.0)
 
@@ -191,3 +192,18 @@ def test_a_run_whose_team_has_landed_skips_to_the_horizon_with_the_same_records(
         late += full.t_detect is not None and bool(landed[int(full.t_detect) - 1])
     assert settled == 6  # every run landed before the horizon: the jump was taken
     assert target is None or late >= 3  # the landed team did see the target
+
+
+PURPOSES = ("scenario", "turn", "shadow", "look", "takeoff", "plan", "rule")
+
+
+@given(seed=st.integers(0, 2**63), run=st.integers(0, 10**6))
+def test_each_stream_is_its_child_of_the_run_s_seed_sequence(seed: int, run: int) -> None:
+    """A run's streams are numpy's own ``spawn`` children of ``SeedSequence(seed, (run,))``,
+    in the order the purposes were added, whichever of them a run makes and in what order."""
+    children = np.random.SeedSequence(seed, spawn_key=(run,)).spawn(len(PURPOSES))
+    streams = run_streams(seed, run)
+    for purpose, child in reversed(list(zip(PURPOSES, children, strict=True))):
+        expected = np.random.Generator(np.random.PCG64(child)).integers(2**63, size=4)
+        np.testing.assert_array_equal(getattr(streams, purpose).integers(2**63, size=4),
+                                      expected)

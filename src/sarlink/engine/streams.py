@@ -8,27 +8,72 @@ draws of the earlier ones stay what they were.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
 
-class Streams(NamedTuple):
-    scenario: np.random.Generator  # target position, take-off heading offset
-    turn: np.random.Generator  # boundary turns
-    shadow: np.random.Generator  # shadow fading per link
-    look: np.random.Generator  # imperfect-sensing looks
-    takeoff: np.random.Generator  # take-off headings (readings.takeoff random, jitter)
-    plan: np.random.Generator  # the seed of a run's own mTSP plan (readings.mtsp_plan per-run)
-    rule: np.random.Generator  # a distributed rule's own draws (Observation.rng)
+class Streams:
+    """The independent generators of run ``run`` of an experiment seeded with ``seed``.
+
+    Stream ``i`` is ``SeedSequence(seed, spawn_key=(run,)).spawn(...)[i]``, made directly as
+    ``SeedSequence(seed, spawn_key=(run, i))`` (what ``spawn`` makes) when first asked for: a
+    run makes only the streams it draws from.
+    """
+
+    __slots__ = ("_made", "run", "seed")
+
+    def __init__(self, seed: int, run: int) -> None:
+        self.seed, self.run = seed, run
+        self._made: dict[int, np.random.Generator] = {}
+
+    def _stream(self, i: int) -> np.random.Generator:
+        if i not in self._made:
+            sequence = np.random.SeedSequence(self.seed, spawn_key=(self.run, i))
+            self._made[i] = np.random.Generator(np.random.PCG64(sequence))
+        return self._made[i]
+
+    @property
+    def scenario(self) -> np.random.Generator:
+        """The target's position and the take-off heading offset."""
+        return self._stream(0)
+
+    @property
+    def turn(self) -> np.random.Generator:
+        """Boundary turns."""
+        return self._stream(1)
+
+    @property
+    def shadow(self) -> np.random.Generator:
+        """The channel: shadow fading per link (a radio model's ``update``)."""
+        return self._stream(2)
+
+    @property
+    def look(self) -> np.random.Generator:
+        """Imperfect-sensing looks."""
+        return self._stream(3)
+
+    @property
+    def takeoff(self) -> np.random.Generator:
+        """Take-off headings (``readings.takeoff`` random, jitter)."""
+        return self._stream(4)
+
+    @property
+    def plan(self) -> np.random.Generator:
+        """The seed of a run's own mTSP plan (``readings.mtsp_plan = per-run``)."""
+        return self._stream(5)
+
+    @property
+    def rule(self) -> np.random.Generator:
+        """A distributed rule's own draws (``Observation.rng``)."""
+        return self._stream(6)
 
 
 def run_streams(seed: int, run: int) -> Streams:
     """The independent generators of run ``run`` of an experiment seeded with ``seed``."""
     if seed < 0 or run < 0:
         raise ValueError(f"seed and run must be >= 0, got seed={seed}, run={run}")
-    children = np.random.SeedSequence(seed, spawn_key=(run,)).spawn(len(Streams._fields))
-    return Streams(*(np.random.Generator(np.random.PCG64(c)) for c in children))
+    return Streams(seed, run)
 
 
 def copied(stream: np.random.Generator) -> np.random.Generator:
