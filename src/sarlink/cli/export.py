@@ -28,7 +28,7 @@ def export(
     run: options.Run = 0,
 ) -> None:
     """Write one QGroundControl .plan and one .waypoints file per route drone (take-off at
-    the BS, the route, landing at the BS; the .plan's geofence keeps the drone inside the area
+    the BS, the route, landing at the BS; the .plan's geofence fences the drone into the area
     and out of its no-fly zones), fence.waypoints (the same fence for ArduPilot: MAVProxy's
     fence load) and the team's GeoJSON (area, no-fly zones, BS, routes; the distributed
     drones' simulated tracks of run RUN of SEED)."""

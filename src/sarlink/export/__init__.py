@@ -4,11 +4,11 @@ Route drones (any planner whose steering gives a drone waypoints: mTSP, mTSP-Con
 drones, search patterns) get one QGroundControl ``.plan`` and one ``QGC WPL 110``
 ``.waypoints`` file each (:mod:`.qgc`). Each ``.plan`` carries the search area as the
 autopilot's geofence (stay inside the outline, out of the no-fly zones), so that a drone that
-drifts or is flown by hand is stopped at the area's edge; ``fence.waypoints`` holds the same
-fence for ArduPilot, which takes its fence apart from the mission. Distributed drones decide
-where to fly in the air, from what they sense and hear, so no file can hold their flight in
-advance: their simulated tracks of one run go into the team's GeoJSON for the briefing
-instead (:mod:`.geojson`).
+drifts or is flown by hand meets the autopilot's breach action at the area's edge and at
+every no-fly zone; ``fence.waypoints`` holds the same fence for ArduPilot, which takes its
+fence apart from the mission. Distributed drones decide where to fly in the air, from what
+they sense and hear, so no file can hold their flight in advance: their simulated tracks of
+one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`).
 """
 
 from __future__ import annotations
