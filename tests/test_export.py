@@ -1,18 +1,21 @@
 """``sarlink export``: .plan files pass QGroundControl's loader rules, .waypoints load with
-pymavlink, coordinates round-trip to the simulated routes, and the GeoJSON validates."""
+pymavlink, coordinates round-trip to the simulated routes, the fence (in the .plan and in
+fence.waypoints, loaded by pymavlink's fence loader and checked against ArduPilot's rules) is
+the mission's area, and the GeoJSON validates."""
 
 from __future__ import annotations
 
 import json
 import math
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
 from geojson_pydantic import FeatureCollection
-from pymavlink import mavwp
-from shapely.geometry import Polygon, shape
+from pymavlink import mavutil, mavwp
+from shapely.geometry import LineString, Polygon, shape
 
 from sarlink import ConfigError, Mission
 from sarlink.config.region import area_polygon
@@ -24,6 +27,11 @@ MAV_AUTOPILOT_PX4 = 12  # the MAVLink common message set's MAV_AUTOPILOT enum
 MAV_AUTOPILOT_ARDUPILOTMEGA = 3
 MAV_CMD_NAV_WAYPOINT = 16
 MAV_FRAME_GLOBAL_RELATIVE_ALT = 3
+MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION = 5001
+MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION = 5002
+GLOBAL_FRAMES = {0, 3, 5, 6, 10, 11}
+"""MAV_FRAME_GLOBAL, _RELATIVE_ALT, _INT, _RELATIVE_ALT_INT, _TERRAIN_ALT, _TERRAIN_ALT_INT: the
+frames ArduPilot takes a fence item in."""
 
 
 def _number(value: Any) -> bool:
@@ -88,9 +96,83 @@ def qgc_plan_problems(plan: Any) -> list[str]:
     if not (fence.get("version") == 2 and isinstance(fence.get("circles"), list)
             and isinstance(fence.get("polygons"), list)):
         bad.append("geoFence must have version 2, circles and polygons")
+    else:
+        bad += fence_problems(fence)
     if not (rally.get("version") == 2 and isinstance(rally.get("points"), list)):
         bad.append("rallyPoints must have version 2 and points")
     return bad
+
+
+def fence_problems(fence: dict[str, Any]) -> list[str]:
+    """The rules QGroundControl's fence loader enforces (src/MissionManager/
+    GeoFenceController.cc ``load``: an optional ``breachReturn`` [lat, lon, alt]; each polygon
+    an object, read by QGCFencePolygon.cc ``loadFromJson``: ``version`` 1 and a boolean
+    ``inclusion``, then QGCMapPolygon.cc ``loadFromJson``: a required ``polygon`` read by
+    JsonHelper ``loadGeoCoordinateArray``/``loadGeoCoordinate``: an array of coordinates of
+    exactly two numbers, [lat, lon]), the coordinates valid (QGeoCoordinate), and MAVLink's
+    rules for a fence polygon (common.xml, MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION: at least
+    3 vertices, not self-intersecting)."""
+    bad = []
+    if "breachReturn" in fence:
+        point = fence["breachReturn"]
+        if not (isinstance(point, list) and len(point) == 3 and all(map(_number, point))):
+            bad.append("breachReturn must be [lat, lon, alt]")
+    for k, polygon in enumerate(fence["polygons"]):
+        if not isinstance(polygon, dict):
+            bad.append(f"fence polygon {k} must be an object")
+            continue
+        if not (_number(polygon.get("version")) and int(polygon["version"]) == 1):
+            bad.append(f"fence polygon {k}: version must be 1")
+        if not isinstance(polygon.get("inclusion"), bool):
+            bad.append(f"fence polygon {k}: inclusion must be true or false")
+        ring = polygon.get("polygon")
+        if not (isinstance(ring, list) and all(
+                isinstance(v, list) and len(v) == 2 and all(map(_number, v)) for v in ring)):
+            bad.append(f"fence polygon {k}: polygon must be an array of [lat, lon]")
+            continue
+        if not all(-90 <= lat <= 90 and -180 <= lon <= 180 for lat, lon in ring):
+            bad.append(f"fence polygon {k}: a vertex is not a latitude, longitude")
+        elif len(ring) < 3:
+            bad.append(f"fence polygon {k}: at least 3 vertices")
+        elif not LineString([*ring, ring[0]]).is_simple:
+            bad.append(f"fence polygon {k}: its edges must not cross")
+    return bad
+
+
+def ardupilot_fence_problems(items: list[Any]) -> list[str]:
+    """The rules ArduPilot checks on an uploaded fence (libraries/GCS_MAVLink/
+    MissionItemProtocol_Fence.cpp ``convert_MISSION_ITEM_INT_to_AC_PolyFenceItem``: a global
+    frame, a vertex count of at most 255; libraries/AC_Fence/AC_PolyFence_loader.cpp
+    ``validate_fence``: at least 3 vertices, each polygon's vertices one after another with
+    the same type and count, no polygon left unfinished, valid latitudes and longitudes).
+    sarlink writes polygon vertices only, so any other item is reported too."""
+    bad = []
+    left, kind, count = 0, 0, 0
+    for k, w in enumerate(items):
+        if w.command not in (MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION,
+                             MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION):
+            bad.append(f"item {k}: command {w.command} is not a polygon vertex")
+            continue
+        if w.frame not in GLOBAL_FRAMES:
+            bad.append(f"item {k}: frame {w.frame} is not a global frame")
+        if not 3 <= w.param1 <= 255:
+            bad.append(f"item {k}: vertex count {w.param1:g} not in 3..255")
+        if left == 0:
+            left, kind, count = int(w.param1), w.command, int(w.param1)
+        elif (w.command, int(w.param1)) != (kind, count):
+            bad.append(f"item {k}: a vertex of another polygon before the last one ended")
+        left -= 1
+        if not (-90 <= w.x <= 90 and -180 <= w.y <= 180):
+            bad.append(f"item {k}: bad lat or lon")
+    if left > 0:
+        bad.append("the last polygon lacks vertices")
+    return bad
+
+
+def _rings(plan: dict[str, Any]) -> list[tuple[bool, np.ndarray]]:
+    """(inclusion, [lat, lon] vertices) of a .plan's fence polygons."""
+    return [(p["inclusion"], np.asarray(p["polygon"], dtype=float))
+            for p in plan["geoFence"]["polygons"]]
 
 
 @pytest.fixture(scope="module")
@@ -137,6 +219,198 @@ def test_a_broken_plan_breaks_the_rules() -> None:
                         "doJumpId must number the items from 1 (home is 0)",
                         "geoFence must have version 2, circles and polygons",
                         "rallyPoints must have version 2 and points"]
+
+
+VALID_PLAN = {"fileType": "Plan", "version": 1, "groundStation": "QGroundControl",
+              "mission": {"version": 2, "firmwareType": 12, "plannedHomePosition": [46, 7, 0],
+                          "items": []},
+              "rallyPoints": {"version": 2, "points": []}}
+SQUARE = [[46.0, 7.0], [46.0, 7.01], [46.01, 7.01], [46.01, 7.0]]
+
+
+@pytest.mark.parametrize(("fence", "problem"), [
+    ({"breachReturn": [46.0, 7.0]}, "breachReturn must be [lat, lon, alt]"),
+    ({"polygons": [SQUARE]}, "fence polygon 0 must be an object"),
+    ({"polygons": [{"inclusion": True, "polygon": SQUARE}]}, "version must be 1"),
+    ({"polygons": [{"version": 2, "inclusion": True, "polygon": SQUARE}]}, "version must be 1"),
+    ({"polygons": [{"version": 1, "inclusion": 1, "polygon": SQUARE}]}, "true or false"),
+    ({"polygons": [{"version": 1, "inclusion": True}]}, "array of [lat, lon]"),
+    ({"polygons": [{"version": 1, "inclusion": True, "polygon": [[46.0, 7.0, 0.0]] * 3}]},
+     "array of [lat, lon]"),
+    ({"polygons": [{"version": 1, "inclusion": False, "polygon": [[146.0, 7.0]] * 3}]},
+     "not a latitude, longitude"),
+    ({"polygons": [{"version": 1, "inclusion": False, "polygon": SQUARE[:2]}]},
+     "at least 3 vertices"),
+    ({"polygons": [{"version": 1, "inclusion": True,  # a bow tie
+                    "polygon": [SQUARE[0], SQUARE[2], SQUARE[1], SQUARE[3]]}]},
+     "must not cross"),
+])
+def test_a_broken_fence_breaks_the_rules(fence: dict[str, Any], problem: str) -> None:
+    """The fence checker can fail: each rule on a fence that breaks it (and only that one)."""
+    good = {"version": 2, "circles": [], "polygons": [
+        {"version": 1, "inclusion": True, "polygon": SQUARE}]}
+    assert qgc_plan_problems({**VALID_PLAN, "geoFence": good}) == []
+    problems = qgc_plan_problems({**VALID_PLAN, "geoFence": {**good, **fence}})
+    assert len(problems) == 1 and problem in problems[0]
+
+
+@pytest.fixture(params=["valley", "square"])
+def fenced(request: pytest.FixtureRequest, valley: Mission) -> Mission:
+    """The valley (an outline with a no-fly zone) and the paper's square placed on the map."""
+    if request.param == "valley":
+        return valley
+    return Mission.from_dict({"team": {"planner": "mtsp", "drones": 3},
+                              "region": {"bs": [-3.7038, 40.4168]}})
+
+
+def test_the_fence_is_the_mission_area(tmp_path: Path, fenced: Mission) -> None:
+    """Every .plan's fence, projected back into the mission's frame, is the area the engine
+    flies: its outline (inclusion) and each no-fly zone (exclusion), vertex for vertex within
+    a centimetre, each vertex once as QGroundControl writes a polygon (QGCMapPolygon.cc
+    ``saveToJson`` writes the vertices it holds; its KML reader drops the closing one)."""
+    out = export_mission(fenced, tmp_path)
+    frame = mission_frame(fenced)
+    area = area_polygon(fenced.region, fenced.area.size)
+    expected = [(True, area.exterior), *((False, h) for h in area.interiors)]
+    plans = [json.loads(d.files[0].read_text()) for d in out.drones if d.kind == "route"]
+    assert plans
+    for plan in plans:
+        assert qgc_plan_problems(plan) == []
+        rings = _rings(plan)
+        assert [inclusion for inclusion, _ in rings] == [inclusion for inclusion, _ in expected]
+        for (_, ring), (_, want) in zip(rings, expected, strict=True):
+            assert not np.array_equal(ring[0], ring[-1])
+            x, y = frame.to_local(ring[:, 1], ring[:, 0])
+            assert np.hypot(x - want.xy[0][:-1], y - want.xy[1][:-1]).max() < 0.01  # m
+    assert all(p["geoFence"] == plans[0]["geoFence"] for p in plans)
+
+
+def test_the_valley_fence_is_the_area_file(tmp_path: Path, valley: Mission) -> None:
+    """Straight from examples/valley.geojson: the polygon's outer ring is the inclusion fence
+    and its hole the exclusion fence, to the millimetre the mission rounds its geometry to."""
+    out = export_mission(valley, tmp_path)
+    area = json.loads((EXAMPLES / "valley.geojson").read_text())
+    rings = next(f["geometry"]["coordinates"] for f in area["features"]
+                 if f["geometry"]["type"] == "Polygon")
+    fence = _rings(json.loads(out.drones[0].files[0].read_text()))
+    assert [inclusion for inclusion, _ in fence] == [True] + [False] * (len(rings) - 1)
+    for (_, got), want in zip(fence, rings, strict=True):
+        assert np.abs(got[:, ::-1] - np.asarray(want)[:-1]).max() < 1e-7  # degrees, ~1 cm
+
+
+def test_the_square_fence_has_the_squares_corners(tmp_path: Path) -> None:
+    """The paper's square placed with --bs: the fence's four corners lie half a diagonal from
+    the BS at its centre, to the north-east, south-east, south-west and north-west
+    (geodesics on WGS84 by pyproj's Geod, independent of the mission's projection)."""
+    from pyproj import Geod
+
+    m = Mission.from_dict({"team": {"planner": "mtsp", "drones": 2},
+                           "region": {"bs": [-3.7038, 40.4168]}})
+    out = export_mission(m, tmp_path)
+    [(inclusion, ring)] = _rings(json.loads(out.drones[0].files[0].read_text()))
+    assert inclusion and len(ring) == 4
+    n = len(ring)
+    azimuth, _, dist = Geod(ellps="WGS84").inv([-3.7038] * n, [40.4168] * n, ring[:, 1],
+                                               ring[:, 0])
+    assert dist == pytest.approx([m.area.size / math.sqrt(2)] * 4, abs=0.01)
+    assert sorted(np.round(np.asarray(azimuth) % 360, 3)) == [45.0, 135.0, 225.0, 315.0]
+
+
+def test_no_drone_trips_its_own_fence(tmp_path: Path, fenced: Mission) -> None:
+    """On the map (longitude, latitude), every leg a drone flies, from take-off to landing,
+    stays inside the inclusion polygon and never enters an exclusion polygon."""
+    out = export_mission(fenced, tmp_path)
+    for drone in (d for d in out.drones if d.kind == "route"):
+        plan = json.loads(drone.files[0].read_text())
+        legs = [i["params"][4:6] for i in plan["mission"]["items"] if i["params"][4] is not None
+                and i["frame"] == MAV_FRAME_GLOBAL_RELATIVE_ALT]
+        flight = LineString([(lon, lat) for lat, lon in legs])
+        for inclusion, ring in _rings(plan):
+            zone = Polygon(ring[:, ::-1])
+            if inclusion:
+                assert zone.covers(flight)
+            else:
+                assert not flight.intersects(zone.buffer(-1e-7))  # not inside (~1 cm)
+
+
+@pytest.fixture
+def mavlink2() -> Iterator[None]:
+    """MAVLink 2 for pymavlink's fence loader (fence items exist only in MAVLink 2, which
+    MAVProxy speaks); the dialect chosen before is restored afterwards."""
+    mp = pytest.MonkeyPatch()
+    dialect = mavutil.current_dialect
+    mp.setenv("MAVLINK20", "1")
+    mavutil.set_dialect(dialect)
+    yield
+    mp.undo()
+    mavutil.set_dialect(dialect)
+
+
+def _fence_items(path: Path) -> list[Any]:
+    loader = mavwp.MissionItemProtocol_Fence()  # MAVProxy's fence module's loader_class
+    loader.load(str(path))
+    return [loader.item(k) for k in range(loader.count())]
+
+
+@pytest.mark.usefixtures("mavlink2")
+def test_the_ardupilot_fence_loads_with_pymavlink_and_is_the_plans(tmp_path: Path,
+                                                                    fenced: Mission) -> None:
+    out = export_mission(fenced, tmp_path, firmware="ardupilot")
+    assert out.fence == tmp_path / "fence.waypoints"
+    items = _fence_items(out.fence)
+    assert ardupilot_fence_problems(items) == []
+    plan = json.loads(out.drones[0].files[0].read_text())
+    rings = _rings(plan)
+    assert len(items) == sum(len(r) for _, r in rings)
+    k = 0
+    for inclusion, ring in rings:  # the .plan's polygons, in order, to 1e-8 degree (~1 mm)
+        polygon = items[k:k + len(ring)]
+        k += len(ring)
+        assert {w.command for w in polygon} == {MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION
+                                                if inclusion else
+                                                MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION}
+        assert np.abs(np.array([(w.x, w.y) for w in polygon]) - ring).max() < 1e-8
+
+
+@pytest.mark.usefixtures("mavlink2")
+@pytest.mark.parametrize(("field", "value", "problem"), [
+    ("command", 16, "not a polygon vertex"),
+    ("frame", 2, "not a global frame"),
+    ("param1", 2.0, "not in 3..255"),
+    ("param1", 256.0, "not in 3..255"),
+    ("x", 91.0, "bad lat or lon"),
+])
+def test_a_broken_ardupilot_fence_breaks_the_rules(tmp_path: Path, valley: Mission, field: str,
+                                                   value: float, problem: str) -> None:
+    """The ArduPilot checker can fail: one item broken, or a polygon cut short."""
+    out = export_mission(valley, tmp_path)
+    assert out.fence is not None
+    items = _fence_items(out.fence)
+    assert [p for p in ardupilot_fence_problems(items[:-1]) if "lacks" in p]
+    setattr(items[3], field, value)
+    problems = ardupilot_fence_problems(items)
+    assert any(problem in p for p in problems)
+
+
+def test_an_area_too_fine_for_ardupilot_keeps_its_fence_in_the_plan(tmp_path: Path) -> None:
+    """ArduPilot takes at most 255 vertices a polygon: a finer outline gets no fence.waypoints
+    (and a note saying why), while the .plan still holds the whole fence."""
+    angles = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+    ring = [[7.0 + 0.02 * math.cos(a), 46.0 + 0.014 * math.sin(a)] for a in angles]
+    area = {"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {}, "geometry": {
+            "type": "Polygon", "coordinates": [[*ring, ring[0]]]}},
+        {"type": "Feature", "properties": {}, "geometry": {
+            "type": "Point", "coordinates": [7.0, 46.0]}}]}
+    (tmp_path / "round.geojson").write_text(json.dumps(area))
+    m = Mission.from_dict({"team": {"planner": "mtsp", "drones": 1},
+                           "region": {"area": str(tmp_path / "round.geojson")}})
+    out = export_mission(m, tmp_path)
+    assert out.fence is None and not (tmp_path / "fence.waypoints").exists()
+    assert any("300 vertices" in note and "255" in note for note in out.notes)
+    plan = json.loads(out.drones[0].files[0].read_text())
+    assert qgc_plan_problems(plan) == []
+    assert [len(r) for _, r in _rings(plan)] == [300]
 
 
 def test_waypoint_files_load_with_pymavlink_and_round_trip(tmp_path: Path,

@@ -51,16 +51,19 @@ def test_export_writes_the_upload_files(tmp_path: Path) -> None:
     assert out.exit_code == 0, out.output
     names = sorted(p.name for p in (tmp_path / "plans").iterdir())
     assert names == ["drone-00.plan", "drone-00.waypoints", "drone-01.plan",
-                     "drone-01.waypoints", "team.geojson"]
+                     "drone-01.waypoints", "fence.waypoints", "team.geojson"]
     plan = json.loads((tmp_path / "plans" / "drone-01.plan").read_text())
     assert plan["mission"]["firmwareType"] == 3
+    assert [p["inclusion"] for p in plan["geoFence"]["polygons"]] == [True, False]
+    assert "fence for ArduPilot" in out.stdout
 
 
 def test_distributed_planners_export_their_tracks_and_say_why_no_upload(tmp_path: Path) -> None:
     out = runner.invoke(app, ["export", "--area", AREA, "--planner", "covb", "--drones", "3",
                               "--out", str(tmp_path / "plans")])
     assert out.exit_code == 0, out.output
-    assert sorted(p.name for p in (tmp_path / "plans").iterdir()) == ["team.geojson"]
+    assert sorted(p.name for p in (tmp_path / "plans").iterdir()) == ["fence.waypoints",
+                                                                      "team.geojson"]
     assert "no file can hold their flight in advance" in " ".join(out.stdout.split())
     data = json.loads((tmp_path / "plans" / "team.geojson").read_text())
     tracks = [f for f in data["features"] if f["properties"]["role"] == "simulated track"]

@@ -28,8 +28,10 @@ def export(
     run: options.Run = 0,
 ) -> None:
     """Write one QGroundControl .plan and one .waypoints file per route drone (take-off at
-    the BS, the route, landing at the BS) and the team's GeoJSON (area, no-fly zones, BS,
-    routes; the distributed drones' simulated tracks of run RUN of SEED)."""
+    the BS, the route, landing at the BS; the .plan's geofence fences the drone into the area
+    and out of its no-fly zones), fence.waypoints (the same fence for ArduPilot: MAVProxy's
+    fence load) and the team's GeoJSON (area, no-fly zones, BS, routes; the distributed
+    drones' simulated tracks of run RUN of SEED)."""
     with user_errors():
         if firmware not in get_args(Firmware):
             raise ConfigError(f"--firmware {firmware!r}: expected px4 or ardupilot")
@@ -49,5 +51,8 @@ def export(
                       f"{d.length / 1000:.2f} km", f"{d.flight_time / 60:.1f} min", files)
     console.print(table)
     console.print(f"team map: {team.geojson}", highlight=False)
+    if team.fence is not None:
+        console.print(f"fence for ArduPilot (MAVProxy: fence load): {team.fence}",
+                      highlight=False)
     for note in team.notes:
         console.print(note, highlight=False, soft_wrap=True)

@@ -2,9 +2,13 @@
 
 Route drones (any planner whose steering gives a drone waypoints: mTSP, mTSP-ConB's route
 drones, search patterns) get one QGroundControl ``.plan`` and one ``QGC WPL 110``
-``.waypoints`` file each (:mod:`.qgc`). Distributed drones decide where to fly in the air, from
-what they sense and hear, so no file can hold their flight in advance: their simulated tracks
-of one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`).
+``.waypoints`` file each (:mod:`.qgc`). Each ``.plan`` carries the search area as the
+autopilot's geofence (stay inside the outline, out of the no-fly zones), so that a drone that
+drifts or is flown by hand meets the autopilot's breach action at the area's edge and at
+every no-fly zone; ``fence.waypoints`` holds the same fence for ArduPilot, which takes its
+fence apart from the mission. Distributed drones decide where to fly in the air, from what
+they sense and hear, so no file can hold their flight in advance: their simulated tracks of
+one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`).
 """
 
 from __future__ import annotations
@@ -18,12 +22,22 @@ import numpy as np
 
 from sarlink.config import ConfigError, Mission
 from sarlink.config.geo import Frame
+from sarlink.config.region import area_polygon
 from sarlink.export.geojson import team_geojson
-from sarlink.export.qgc import Firmware, Route, plan_text, waypoints_text
+from sarlink.export.qgc import (
+    ARDUPILOT_MAX_VERTICES,
+    Fence,
+    Firmware,
+    Route,
+    fence_text,
+    plan_text,
+    waypoints_text,
+)
 from sarlink.planners import get_planner
 from sarlink.simulation import simulate
 
-__all__ = ["DISTRIBUTED_NOTE", "DroneExport", "TeamExport", "export_mission", "mission_frame"]
+__all__ = ["DISTRIBUTED_NOTE", "DroneExport", "TeamExport", "export_mission", "mission_fence",
+           "mission_frame"]
 
 DISTRIBUTED_NOTE = ("run a distributed rule: they decide where to fly in the air, from what "
                     "they sense and hear, so no file can hold their flight in advance; their "
@@ -54,6 +68,8 @@ class TeamExport:
     folder: Path
     geojson: Path
     drones: tuple[DroneExport, ...]
+    fence: Path | None = None
+    """The fence for ArduPilot (``fence.waypoints``), or None if ArduPilot cannot take it."""
     notes: tuple[str, ...] = field(default=())
 
 
@@ -64,6 +80,19 @@ def mission_frame(mission: Mission) -> Frame:
         raise ConfigError("the mission has no place on the map: give the area as GeoJSON "
                           "(--area FILE.geojson) or the BS's longitude,latitude (--bs)")
     return Frame(region.anchor, mission.area.bs_xy)
+
+
+def mission_fence(mission: Mission, frame: Frame) -> Fence:
+    """The mission's area on the map (its outline, or the paper's square, and its no-fly
+    zones) as the autopilot's fence."""
+    area = area_polygon(mission.region, mission.area.size)
+
+    def ring(coords: np.ndarray) -> np.ndarray:
+        lon, lat = frame.to_lonlat(coords[:-1, 0], coords[:-1, 1])  # each vertex once
+        return np.column_stack([lon, lat])
+
+    return Fence(ring(np.asarray(area.exterior.coords)),
+                 tuple(ring(np.asarray(h.coords)) for h in area.interiors))
 
 
 def _length(points: np.ndarray) -> float:
@@ -80,6 +109,7 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
     if not (math.isfinite(altitude) and altitude > 0):
         raise ConfigError(f"--altitude must be a height above the BS > 0 m, got {altitude:g}")
     frame = mission_frame(mission)
+    fence = mission_fence(mission, frame)
     steering = get_planner(mission.team.planner).steering(mission)
     n, speed = mission.team.drones, mission.team.speed
     bs = np.asarray(mission.area.bs_xy, dtype=float)
@@ -95,12 +125,21 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
         flight = Route(home, np.column_stack([lon, lat]), altitude, speed)
         stem = folder / f"drone-{i:02d}"
         plan, wpl = stem.with_suffix(".plan"), stem.with_suffix(".waypoints")
-        plan.write_text(plan_text(flight, firmware), encoding="utf-8")
+        plan.write_text(plan_text(flight, firmware, fence), encoding="utf-8")
         wpl.write_text(waypoints_text(flight), encoding="utf-8")
         length = _length(np.vstack([bs, local]))
         drones.append(DroneExport(i, "route", length, length / speed, (plan, wpl)))
         paths[i] = ("route", np.vstack([bs, local]))
     notes = []
+    fence_file: Path | None = None
+    most = max(len(ring) for _, ring in fence.polygons())
+    if most <= ARDUPILOT_MAX_VERTICES:
+        fence_file = folder / "fence.waypoints"
+        fence_file.write_text(fence_text(fence), encoding="utf-8")
+    else:
+        notes.append(f"no fence.waypoints: a polygon of the area has {most} vertices and "
+                     f"ArduPilot takes at most {ARDUPILOT_MAX_VERTICES}; simplify the area "
+                     "to fence it on ArduPilot (the .plan files carry the whole fence)")
     distributed = [i for i, r in enumerate(routes) if len(r) == 0]
     if distributed:
         result = simulate(mission, seed=seed, run=run, trajectory=True)
@@ -120,4 +159,4 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
     geojson.write_text(json.dumps(team_geojson(mission, frame, paths, speed), indent=1),
                        encoding="utf-8")
     drones.sort(key=lambda d: d.drone)
-    return TeamExport(folder, geojson, tuple(drones), tuple(notes))
+    return TeamExport(folder, geojson, tuple(drones), fence_file, tuple(notes))

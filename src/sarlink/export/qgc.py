@@ -4,10 +4,15 @@ Written to the rules QGroundControl's loaders enforce (``PlanMasterController::l
 ``MissionController::_loadJsonMissionFileV2``, ``MissionItem::load``, the geofence and rally
 point loaders): a ``Plan`` file of version 1 from a ground station, a mission of version 2
 with the firmware and vehicle type, the planned home position as ``[lat, lon, alt]``, and
-simple items of seven parameters each, numbered by ``doJumpId`` from 1 (home is 0); an empty
-geofence and rally points of version 2. A drone takes off at the BS, sets its speed, flies
-its waypoints at a constant height above the BS (``MAV_FRAME_GLOBAL_RELATIVE_ALT``) and lands
-at the BS. The ``.waypoints`` text file holds the same items after ArduPilot's home line.
+simple items of seven parameters each, numbered by ``doJumpId`` from 1 (home is 0); a
+geofence of version 2 whose polygons (version 1, ``inclusion``, ``polygon`` of ``[lat, lon]``
+vertices, each once) are the search area to stay in and its no-fly zones to stay out of; no
+rally points. A drone takes off at the BS, sets its speed, flies its waypoints at a constant
+height above the BS (``MAV_FRAME_GLOBAL_RELATIVE_ALT``) and lands at the BS. The
+``.waypoints`` text file holds the same items after ArduPilot's home line; the fence's
+``QGC WPL 110`` file holds the same polygons as MAVLink fence items, each vertex an item of
+``MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION`` (or ``_EXCLUSION``) whose first parameter is
+its polygon's vertex count (what MAVProxy's ``fence load`` reads and ArduPilot stores).
 """
 
 from __future__ import annotations
@@ -18,7 +23,8 @@ from typing import Any, Literal
 
 import numpy as np
 
-__all__ = ["FIRMWARE", "Leg", "Route", "plan_json", "waypoints_text"]
+__all__ = ["ARDUPILOT_MAX_VERTICES", "FIRMWARE", "Fence", "Leg", "Route", "fence_text",
+           "plan_json", "plan_text", "waypoints_text"]
 
 Firmware = Literal["px4", "ardupilot"]
 FIRMWARE: dict[str, int] = {"px4": 12, "ardupilot": 3}
@@ -31,10 +37,16 @@ MAV_CMD_NAV_WAYPOINT = 16
 MAV_CMD_NAV_LAND = 21
 MAV_CMD_NAV_TAKEOFF = 22
 MAV_CMD_DO_CHANGE_SPEED = 178
+MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION = 5001
+MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION = 5002
 PLAN_FILE_VERSION = 1
 MISSION_VERSION = 2
 FENCE_VERSION = 2
+FENCE_POLYGON_VERSION = 1
 RALLY_VERSION = 2
+ARDUPILOT_MAX_VERTICES = 255
+"""Most vertices of one fence polygon ArduPilot accepts (its ``MissionItemProtocol_Fence``
+refuses a vertex count above 255)."""
 
 
 @dataclass(frozen=True)
@@ -75,8 +87,25 @@ class Route:
         return items
 
 
-def plan_json(route: Route, firmware: Firmware) -> dict[str, Any]:
-    """The QGroundControl ``.plan`` document of one drone's route."""
+@dataclass(frozen=True)
+class Fence:
+    """The search area on the map: a drone stays inside ``outline`` and out of every hole.
+
+    Rings of (longitude, latitude), shape ``(k, 2)``, each vertex once: fence polygons close
+    themselves (QGroundControl's and ArduPilot's), so a repeated first vertex would be a
+    vertex too many.
+    """
+
+    outline: np.ndarray
+    holes: tuple[np.ndarray, ...] = ()
+
+    def polygons(self) -> list[tuple[bool, np.ndarray]]:
+        """(inclusion, ring) of every fence polygon: the outline, then each no-fly zone."""
+        return [(True, self.outline), *((False, hole) for hole in self.holes)]
+
+
+def plan_json(route: Route, firmware: Firmware, fence: Fence) -> dict[str, Any]:
+    """The QGroundControl ``.plan`` document of one drone's route inside ``fence``."""
     lon0, lat0 = route.home
     items = []
     for k, leg in enumerate(route.legs()):
@@ -100,14 +129,17 @@ def plan_json(route: Route, firmware: Firmware) -> dict[str, Any]:
             "plannedHomePosition": [lat0, lon0, 0.0],
             "items": items,
         },
-        "geoFence": {"version": FENCE_VERSION, "circles": [], "polygons": []},
+        "geoFence": {"version": FENCE_VERSION, "circles": [], "polygons": [
+            {"version": FENCE_POLYGON_VERSION, "inclusion": inclusion,
+             "polygon": [[float(lat), float(lon)] for lon, lat in ring]}
+            for inclusion, ring in fence.polygons()]},
         "rallyPoints": {"version": RALLY_VERSION, "points": []},
     }
 
 
-def plan_text(route: Route, firmware: Firmware) -> str:
+def plan_text(route: Route, firmware: Firmware, fence: Fence) -> str:
     """The ``.plan`` file's text (JSON; a null stands for a parameter left to the vehicle)."""
-    return json.dumps(plan_json(route, firmware), indent=4) + "\n"
+    return json.dumps(plan_json(route, firmware, fence), indent=4) + "\n"
 
 
 def waypoints_text(route: Route) -> str:
@@ -122,6 +154,20 @@ def waypoints_text(route: Route) -> str:
                    (0.0, 0.0, 0.0, 0.0, lat0, lon0, 0.0))]
     for k, leg in enumerate(route.legs()):
         lines.append(_line(k + 1, 0, leg.frame, leg.command, leg.params))
+    return "\n".join(lines) + "\n"
+
+
+def fence_text(fence: Fence) -> str:
+    """The fence as a ``QGC WPL 110`` file of MAVLink fence items (no home line: a fence has
+    none), numbered from 0: every vertex of a polygon in turn, with the polygon's vertex count
+    as its first parameter, in the global frame at altitude 0 (a fence has no height)."""
+    lines = ["QGC WPL 110"]
+    for inclusion, ring in fence.polygons():
+        command = (MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION if inclusion
+                   else MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION)
+        for lon, lat in ring:
+            lines.append(_line(len(lines) - 1, 0, MAV_FRAME_GLOBAL, command,
+                               (float(len(ring)), 0.0, 0.0, 0.0, float(lat), float(lon), 0.0)))
     return "\n".join(lines) + "\n"
 
 
