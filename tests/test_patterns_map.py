@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 import shapely
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from shapely.geometry import LineString
 
@@ -122,3 +122,38 @@ def test_a_pattern_flies_the_valley_and_every_drone_lands(name: str) -> None:
     assert shapely.dwithin(area, shapely.points(traj.positions.reshape(-1, 2)), 1e-6).all()
     assert (traj.mode[-1] == Mode.LANDED).all()
     np.testing.assert_allclose(traj.positions[-1], np.tile(mission.area.bs_xy, (4, 1)))
+
+
+@given(lengths=st.lists(st.floats(0.0, 5000.0), min_size=1, max_size=30),
+       drones=st.integers(1, 30))
+def test_bands_of_tracks_are_contiguous_and_even_up_to_one_track(lengths: list[float],
+                                                                 drones: int) -> None:
+    """Every track in one band, bands in order, none empty, and no band longer than an equal
+    share plus two of the longest track (each cut at the track boundary nearest its share,
+    unless a band would be left empty)."""
+    weights = np.array(lengths)
+    assume(drones <= len(weights))
+    bands = parallel._balanced(weights, drones)
+    assert len(bands) == drones and all(len(b) for b in bands)
+    np.testing.assert_array_equal(np.concatenate(bands), np.arange(len(weights)))
+    longest = max(float(weights[b].sum()) for b in bands)
+    assert longest <= weights.sum() / drones + 2 * weights.max() + 1e-6
+
+
+def test_on_the_map_parallel_track_bands_share_the_track_length_inside_the_area() -> None:
+    """The valley is wider than tall: its tracks run east-west, S apart across its bounding
+    box, and each drone flies the band of them that the track lengths inside the area
+    (computed here with shapely) share out."""
+    mission = Mission.from_dict({"team": {"planner": "parallel", "drones": 3},
+                                 "sensing": {"r": 250.0},
+                                 "region": {"area": "examples/valley.geojson"}})
+    area = area_polygon(mission.region, mission.area.size)
+    x0, y0, x1, y1 = area.bounds
+    assert x1 - x0 > y1 - y0
+    ys = parallel.tracks(y0, y1, 2 * mission.sensing.r)
+    inner = area.buffer(-INSET, join_style="mitre")
+    lengths = np.array([LineString([(x0, y), (x1, y)]).intersection(inner).length for y in ys])
+    routes = get_planner("parallel").steering(mission).routes
+    for band, route in zip(parallel._balanced(lengths, 3), routes, strict=True):
+        flown = {y for y in ys if np.isclose(route[:, 1], y).sum() >= 2}
+        assert flown == set(ys[band].tolist())

@@ -6,7 +6,8 @@ sides, one track space S apart. Here the tracks are laid over the whole area (al
 square; on the map, along the long sides of the area's bounding box), the first and last half
 a track space inside its edges, the last moved inwards when the width is not a
 multiple of S, and split among the drones: with no more drones than tracks each drone gets a
-band of whole tracks; with more, each track is cut into equal pieces, one per drone. Legs run
+band of whole tracks (on the map, bands of about equal length inside the area); with more,
+each track is cut into equal pieces, one per drone. Legs run
 the sub-area's whole length, edge to edge, so that a definite-range sensor (S = 2 r) covers
 every point, the corners included. Each drone enters at the corner of its sub-area that makes
 its flight from and back to the BS shortest (docs/model.md, Search patterns).
@@ -14,6 +15,7 @@ its flight from and back to the BS shortest (docs/model.md, Search patterns).
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import replace
 from typing import TYPE_CHECKING
@@ -40,10 +42,27 @@ def tracks(lo: float, hi: float, spacing: float) -> np.ndarray:
     return xs
 
 
-def _shares(drones: int, count: int) -> list[tuple[np.ndarray, float, float]]:
-    """Each drone's tracks (indices) and the fractions of their length it flies."""
+def _balanced(lengths: np.ndarray, drones: int) -> list[np.ndarray]:
+    """Contiguous bands of the tracks, one per drone and at least one track each, cut where
+    the summed ``lengths`` come nearest to equal shares."""
+    count, total = len(lengths), float(lengths.sum())
+    before = np.r_[0.0, np.cumsum(lengths)]  # length of the tracks before each cut
+    cuts = [0]
+    for j in range(1, drones):
+        allowed = np.arange(cuts[-1] + 1, count - (drones - j) + 1)
+        cuts.append(int(allowed[np.argmin(np.abs(before[allowed] - total * j / drones))]))
+    cuts.append(count)
+    return [np.arange(a, b) for a, b in itertools.pairwise(cuts)]
+
+
+def _shares(drones: int, count: int, lengths: np.ndarray | None = None
+            ) -> list[tuple[np.ndarray, float, float]]:
+    """Each drone's tracks (indices) and the fractions of their length it flies; with the
+    tracks' ``lengths`` inside an area on the map, bands of even length."""
     if drones <= count:
-        return [(band, 0.0, 1.0) for band in np.array_split(np.arange(count), drones)]
+        bands = (np.array_split(np.arange(count), drones) if lengths is None
+                 else _balanced(lengths, drones))
+        return [(band, 0.0, 1.0) for band in bands]
     per_track = [len(part) for part in np.array_split(np.arange(drones), count)]
     return [(np.array([j]), m / n, (m + 1) / n) for j, n in enumerate(per_track)
             for m in range(n)]
@@ -61,11 +80,14 @@ def plan(search: Search) -> tuple[np.ndarray, ...]:
     area = search.area
     if area.x1 - area.x0 > area.y1 - area.y0:  # planned with x and y swapped, then back
         swapped = replace(search, area=Rect(area.y0, area.x0, area.y1, area.x1),
-                          bs=(search.bs[1], search.bs[0]))
+                          bs=(search.bs[1], search.bs[0]),
+                          on_map=None if search.on_map is None else search.on_map.swapped())
         return tuple(np.ascontiguousarray(route[:, ::-1]) for route in plan(swapped))
     xs = tracks(area.x0, area.x1, search.spacing)
+    lengths = None if search.on_map is None else search.on_map.inside(
+        np.array([[(x, area.y0), (x, area.y1)] for x in xs]))
     out = []
-    for band, f0, f1 in _shares(search.drones, len(xs)):
+    for band, f0, f1 in _shares(search.drones, len(xs), lengths):
         y0, y1 = area.y0 + f0 * (area.y1 - area.y0), area.y0 + f1 * (area.y1 - area.y0)
         corners = [_mower(order, a, b) for order in (xs[band], xs[band][::-1])
                    for a, b in ((y0, y1), (y1, y0))]

@@ -70,6 +70,17 @@ class Clipped:
         seen = self.nav.visible(np.broadcast_to(p, points.shape), points)
         return float((np.hypot(*(points - p).T) + dist)[seen].min(initial=math.inf))
 
+    def swapped(self) -> Clipped:
+        """The same area with x and y swapped (mirrored about the diagonal)."""
+        return Clipped(shapely.transform(self.area, lambda xy: xy[:, ::-1]),
+                       (self.bs[1], self.bs[0]))
+
+    def inside(self, segments: np.ndarray) -> np.ndarray:
+        """How long each segment ``(a, b)`` of ``segments`` (shape ``(k, 2, 2)``) is inside the
+        area, :data:`INSET` inside its edges, m."""
+        return np.asarray(shapely.length(shapely.intersection(shapely.linestrings(segments),
+                                                              self._inner)))
+
     def exit(self, angle: float) -> np.ndarray:
         """Where the ray from the BS at ``angle`` (radians) first leaves the area, :data:`INSET`
         inside its edge (the BS itself if that is nearer)."""
