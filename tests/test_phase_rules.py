@@ -160,7 +160,7 @@ def _seen(px: np.ndarray, py: np.ndarray, pz: np.ndarray, hx: np.ndarray, hy: np
     bits = np.zeros((m, words(m)), dtype=np.uint64)
     return Observation(px, py, pz, hx, hy, mode, on_route, last_change,
                        np.zeros(n, dtype=np.bool_), bits, bits, bits[0], bits[0], rc,
-                       *_no_routes(n))
+                       *_no_routes(n), np.random.default_rng(0))
 
 
 @given(team=teams(), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
@@ -511,7 +511,7 @@ def _observation(seed: int, n: int, p: Params) -> Observation:
     return Observation(px, py, pz, np.cos(angles), np.sin(angles), mode,
                        np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.int64),
                        np.zeros(n, dtype=np.bool_), adj, near, routed, spread, p.rc,
-                       *_no_routes(n))
+                       *_no_routes(n), np.random.default_rng(0))
 
 
 @pytest.mark.parametrize("seed", range(4))
