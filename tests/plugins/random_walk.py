@@ -13,11 +13,6 @@ from sarlink import DistributedRule, Observation, Params, RulePlanner
 
 
 @njit
-def prepare(p: Params, obs: Observation) -> np.ndarray:
-    return np.zeros(0)
-
-
-@njit
 def decide(k: int, p: Params, obs: Observation, ws: np.ndarray, deciding: np.ndarray,
            vx: np.ndarray, vy: np.ndarray) -> None:
     for i in range(deciding.shape[0]):
@@ -27,5 +22,4 @@ def decide(k: int, p: Params, obs: Observation, ws: np.ndarray, deciding: np.nda
 
 
 RANDOM_WALK = RulePlanner("random-walk", "Random walk",
-                          DistributedRule("random-walk", decide, prepare=prepare,
-                                          range_free=True))
+                          DistributedRule("random-walk", decide, range_free=True))
