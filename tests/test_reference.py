@@ -36,6 +36,9 @@ CASES = {
     "concov-direct-run-shadowing": {"planner": "concov", "sigma": 3.0, "shadowing": "run",
                                     "reachability": "direct"},
     "conb-period-shadowing": {"planner": "conb", "sigma": 3.0, "shadowing": "period"},
+    "conb-check-period": {"planner": "conb", "conb_check": "period"},
+    "concov-fallback-heading": {"planner": "concov", "concov_fallback": "heading",
+                                "takeoff": "even"},  # radial: resultants cancel
 }
 
 

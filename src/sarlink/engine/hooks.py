@@ -72,7 +72,7 @@ class DistributedRule:
     :class:`sarlink.config.Readings` that change its runs (the sensitivity analysis reruns
     only the rules a choice reaches). ``range_free`` declares that its decisions never read
     the links or the range (``obs.adj``, ``obs.routed``, ``obs.spread``, ``obs.knows``,
-    ``obs.nominal``): a team of it flies the same at every range and is flown once for all
+    ``obs.rc``): a team of it flies the same at every range and is flown once for all
     of them (:mod:`sarlink.engine.ranges`); default False, the safe answer.
     """
 

@@ -34,7 +34,7 @@ def allowed(space: spaces.Space[Any]) -> str:
     """The allowed values of ``space`` in words, for error messages."""
     if isinstance(space, spaces.Discrete):
         return f"an integer in 0..{int(space.n) - 1}"
-    return "a direction (x, y): an array of 2 numbers, each in [-1, 1], not both 0"
+    return "a direction (x, y): an array of 2 numbers, each in [-1, 1] ((0, 0) keeps the heading)"
 
 
 def directions(kind: ActionKind, count: int, actions: np.ndarray, hx: np.ndarray,

@@ -16,7 +16,8 @@ DISC = RadioModel("disc", lognormal.init, lognormal.update, lognormal.nominal,
 """Eq. 4: linked within r_c (the model below with ``sigma = 0``: one kernel for both)."""
 SHADOWING = RadioModel("shadowing", lognormal.init, lognormal.update, lognormal.nominal,
                        static=lognormal.static, range_free=True)
-"""Eq. 13: log-normal fades per link, redrawn every coherence time."""
+"""Eq. 13: log-normal fades per link, changing as ``readings.shadowing`` says (every
+coherence time, once per run, or correlated over the distance flown)."""
 
 
 class _Registry:
