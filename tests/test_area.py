@@ -88,6 +88,15 @@ def test_a_drone_boxed_in_hovers() -> None:
         (0.0, 0.0, True)
 
 
+def test_a_hovering_drone_draws_again() -> None:
+    """A hover lasts one step: where headings fit again, a drone at rest turns to one of them
+    (a zero heading, though its increment "stays inside", is not kept)."""
+    edges = edge_array([np.array([(0, 0), (100, 0), (100, 100), (0, 100)], float)])
+    hx, hy, turned = inward_turn(50.0, 50.0, 0.0, 0.0, 5.0, edges, np.random.default_rng(0))
+    assert turned and math.isclose(math.hypot(hx, hy), 1.0)
+    assert stays_inside(50.0, 50.0, hx, hy, 5.0, edges)
+
+
 @given(areas(holes=3), st.integers(0, 2**32 - 1))
 def test_shortest_paths_stay_inside_and_bound_every_flight_home(mission: Mission,
                                                                 seed: int) -> None:

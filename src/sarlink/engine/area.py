@@ -82,8 +82,10 @@ def stays_inside(x: float, y: float, hx: float, hy: float, step: float,
 def inward_turn(x: float, y: float, hx: float, hy: float, step: float, edges: np.ndarray,
                 rng: np.random.Generator) -> tuple[float, float, bool]:
     """Keep the heading if the next increment stays inside; else a uniform random heading
-    among those that do (rejection), or none (hover) if :data:`TRIES` draws find none."""
-    if stays_inside(x, y, hx, hy, step, edges):
+    among those that do (rejection), or none (hover) if :data:`TRIES` draws find none. A
+    hovering drone (heading ``(0, 0)``, which would "stay inside") draws again next step, so
+    it hovers for that step only."""
+    if (hx != 0.0 or hy != 0.0) and stays_inside(x, y, hx, hy, step, edges):
         return hx, hy, False
     for _ in range(TRIES):
         theta = rng.random() * 2.0 * math.pi
