@@ -101,7 +101,8 @@ def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
 def _plan_times(path: Path, missions: list[Mission], repeats: int) -> pd.DataFrame:
     """Fig. 1's plan times: read from ``path`` if measured there for the same missions and
     repeats, otherwise measured now (one mission at a time, nothing else running) and stored."""
-    setting = {"missions": [m.model_dump(mode="json") for m in missions], "repeats": repeats}
+    setting = {"missions": [m.model_dump(mode="json") for m in missions], "repeats": repeats,
+               "clock": "process"}  # CPU time (plantime); timings of another clock are redone
     if path.exists():
         stored = json.loads(path.read_text())
         if stored.get("setting") == setting:
