@@ -194,7 +194,7 @@ def fig1(plan_times: pd.DataFrame, fig: Figure | None = None) -> Figure:
         ax.plot(sub["drones"], sub["median"], color=style.colour, marker=style.marker)
         ax.fill_between(sub["drones"], sub["min"], sub["max"], color=style.colour, alpha=_BAND,
                         lw=0)
-    ax.set(yscale="log", xlabel="number of drones $N_m$", ylabel="plan computation time (s)",
+    ax.set(yscale="log", xlabel="number of drones $N_m$", ylabel="plan computation time (CPU s)",
            title="$r_c$ = 500 m", xticks=DRONES[::2])
     _legend(fig, planners)
     return fig
