@@ -113,7 +113,7 @@ def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[
                 mine.update(exp.tables(pd.concat([frames[f] for f in folders[exp.name]],
                                                  ignore_index=True)))
             tables.append(mine)
-            del frames
+            del frames  # before the next reading's runs are read
     points = sum(len(e.points()) for e in jobs.values())
     stage = Stage(f"sweep {', '.join(e.name for e in experiments)}",
                   f"{len(jobs)} sweeps (a planner under the choices that reach it), {points} "
