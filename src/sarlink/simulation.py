@@ -50,14 +50,15 @@ def check_mission(mission: Mission) -> None:
 def warm_up(planner: str, radio: str, *, ranges: bool = False) -> None:
     """Compile (or load from the disk cache) the kernel of ``planner``'s rule and the radio
     model ``radio``, by flying one tiny run that needs no plan; with ``ranges``, also the
-    reading of one flight at several ranges (:meth:`~sarlink.engine.Prepared.run_ranges`),
+    reading of one flight's staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`),
     from a drone on a route, which flies the same at every range under any rule's kernel."""
     rule = get_planner(planner).rule
     mission = Mission.build(planner=planner, drones=1, horizon=10.0, radio=radio,
                             sigma=0.0 if radio == "disc" else 1.0)
     route = (np.array([mission.area.bs_xy]),)
     if ranges:
-        Prepared.build(mission, Steering(rule=rule, routes=route)).run_ranges(0, 0, (1.0, 2.0))
+        steering = Steering(rule=rule, routes=route)
+        Prepared.build(mission, steering).run_ranges(0, 0, (1.0, 2.0), staircase=True)
         return
     routes = () if rule is not None else route
     Prepared.build(mission, Steering(rule=rule, routes=routes)).run(0, 0)

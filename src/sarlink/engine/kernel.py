@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import area, graph, motion, records, sensing
+from sarlink.engine import area, graph, motion, ranges, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -57,7 +57,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator,
                     rng_rule: np.random.Generator, edges: np.ndarray, nav: np.ndarray,
-                    far: float) -> RunRecord:
+                    far: float, r2s: np.ndarray) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
@@ -114,9 +114,12 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     may_settle = radio_static(p, rp) and not p.record  # a recorded run keeps every step
     polygon = edges.shape[0] > 0
     home_max = far if polygon else motion.farthest_home(p)
+    reading = r2s.shape[0] > 0
+    rd = ranges.new_reading(r2s, n, mp, cp_steps.shape[0])
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
+        due = ci  # the first checkpoint at or after this step
         ci = records.take_checkpoints(k, cp_steps, ci, reach_cum, conn_cum, acc_reach, acc_conn)
         # ---- observe: sense, link, flood, notify, account ----
         radio_update(thr2, p, rp, k, rng_shadow)
@@ -129,9 +132,13 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
-        graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
+        if push or not reading:  # a reading needs only the pairs within r of the flight
+            graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         reachable, connected = False, 0
-        if not p.trace:  # a traced flight is read at every range afterwards (engine.ranges)
+        if reading:
+            ranges.read_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0, knows, spread,
+                             stack, rd)
+        elif not p.trace:  # a traced flight is read at every range afterwards (engine.ranges)
             graph.bs_component(adj, n, routed, stack)
             if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
                 t_not = t
@@ -142,7 +149,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         elif p.trace:
             records.record_positions(k, px, py, traj_pos)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
-                p.stop == STOP_NOTIFIED and t_not >= 0.0):
+                p.stop == STOP_NOTIFIED and t_not >= 0.0) or (reading and not rd.going.any()):
             break
         acc_reach += p.dt if reachable else 0.0
         acc_conn += p.dt * connected / n
@@ -154,6 +161,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             records.carry_records(k + 1, p.n_steps, cp_steps, ci, reach_cum, conn_cum,
                                   acc_reach, acc_conn, p.dt if reachable else 0.0,
                                   p.dt * connected / n)
+            if reading:
+                ranges.carry_reading(k + 1, p, cp_steps, ci, rd)
             ci = cp_steps.shape[0]
             break
 
@@ -185,4 +194,5 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     return RunRecord(t_det, t_not, detector, t_not >= 0.0 and t_not == t_det,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
-                                   traj_route[:kk], traj_mode[:kk], traj_links[:kk]))
+                                   traj_route[:kk], traj_mode[:kk], traj_links[:kk]),
+                     ranges.read_records(rd))

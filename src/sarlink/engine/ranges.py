@@ -26,14 +26,17 @@ step is more than needed: the graph at each range changes only when a link's key
 range, which moving drones do about once a step among all the links and ranges of a run. So
 the links' *bands* (how many of the ranges lie below their key) are followed instead, and the
 graph of a range, with its BS component, reachability and flood (the kernel's own functions),
-is worked out again only when a link enters or leaves it, or a drone newly senses the target
-(:func:`_bands`, about half the cost of the trees at 8 ranges and N = 10).
+is worked out again only when a link enters or leaves it, or a drone newly senses the target.
+This reading runs inside the flight (:func:`read_step`, called by the kernel at every step
+when given ranges): the flight's own looks and fades (its radio flies at ``r_c = 1``, so its
+thresholds are the bare fades) and its positions as they are, with no graph at the flight's
+own range.
 
-The flight is read from its positions (``Params.trace``: the flight keeps no graph); the
-sensing looks and the fades are drawn again from copies of the run's streams, which the flight
-draws independently of ``r_c`` (docs/model.md, "One flight, every range"). Only the built-in
-log-normal radio (disc and shadowing) is read this way: its fades are redrawn here with its
-own hook.
+The staircase is read after the flight from its positions (``Params.trace``: the flight
+keeps no graph); the sensing looks and the fades are drawn again from copies of the run's
+streams, which the flight draws independently of ``r_c`` (docs/model.md, "One flight, every
+range"). Only the built-in log-normal radio (disc and shadowing) is read either way: its
+fades are the same at every range.
 """
 
 from __future__ import annotations
@@ -44,7 +47,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from sarlink.engine import graph, sensing
+from sarlink.engine import graph, records, sensing
 from sarlink.engine.codes import Reachability
 from sarlink.engine.geometry import FAR, PAD
 from sarlink.engine.params import STOP_DETECTED, STOP_NOTIFIED, Params
@@ -309,123 +312,180 @@ def _toggle(adj: np.ndarray, a: int, b: int) -> None:
     adj[b, a >> 6] ^= np.uint64(1) << np.uint64(a & 63)
 
 
-@njit(cache=True, error_model="numpy")
-def _bands(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
-           end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-           cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
-    """:func:`critical` without the staircase: the graph at each range, kept up to date.
+class Reading(NamedTuple):
+    """A range-free flight read at several ranges as it flies (:func:`read_step`): the graph
+    at each range, and each range's records. Ranges are indexed in ascending order."""
 
-    Every link sits in a *band*, the number of ranges (ascending) below its key: it exists
-    at the ranges from its band on. A step computes every key as the kernel's link pass does
-    (whole padded rows, in vectors) and compares it with its band's bounds; only a link that
-    left its band changes a graph, and only at the ranges between its old and new band. Only
-    there are the BS's component and reachability found again, and the knowledge flooded
-    again where the graph or the knowers changed and the BS is not notified yet. At every
-    range the graph, the BS's component, reachability and flooding are the kernel's own
-    (:mod:`sarlink.engine.graph`), on the links it would find.
-    """
-    n = positions.shape[1]
+    thr: np.ndarray
+    """The squared ranges, ascending."""
+    rank: np.ndarray
+    """``thr[j] = r2s[rank[j]]``."""
+    band: np.ndarray
+    """``(m, m)``: per link ``a < b``, how many ranges lie below its key."""
+    bounds: np.ndarray
+    """``(2, m, mp)``: the keys between which a link stays in its band, ``(lo, hi]``; never
+    crossed off the links (``a >= b``, the padding)."""
+    key: np.ndarray
+    """One row of squared distances (work space)."""
+    adj: np.ndarray
+    """``(ranges, m, words)``: the graph at each range."""
+    routed: np.ndarray
+    """``(ranges, words)``: the BS's component at each range."""
+    knows: np.ndarray
+    """``(ranges, N)``: who knows the target's location at each range."""
+    counted: np.ndarray
+    """``(N,)``: the drones whose sensing is already in ``knows``."""
+    changed: np.ndarray
+    """``(ranges,)``: whether the graph at a range changed this step."""
+    notified: np.ndarray
+    """Per range: the step of the notification (``-1``: never)."""
+    reach_cum: np.ndarray
+    """``(ranges, checkpoints)``: the kernel's ``reach_cum`` at each range."""
+    conn_cum: np.ndarray
+    """``(ranges, checkpoints)``: the kernel's ``conn_cum`` at each range."""
+    acc_reach: np.ndarray
+    """Per range: the running sums of those records."""
+    acc_conn: np.ndarray
+    going: np.ndarray
+    """Per range: whether its run goes on."""
+    reachable: np.ndarray
+    """Per range: whether the target is reachable at this step."""
+    connected: np.ndarray
+    """Per range: how many drones have a route to the BS at this step."""
+
+
+@njit(cache=True, error_model="numpy")
+def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
+    """The reading of a flight of ``n`` drones (``mp`` padded nodes) at the squared ranges
+    ``r2s``, before its first step: no link at any range yet."""
     m = n + 2
-    last = positions.shape[0] - 1
-    px, py, pz, fade = _nodes(p, unit, n, target_x, target_y)
-    mp = px.shape[0]
-    shadowed = p.sigma > 0.0
-    no_params = np.empty(0)
     rank = np.argsort(r2s, kind="mergesort")
     thr = r2s[rank]
     nr = thr.shape[0]
-    band = np.full((m, m), nr, dtype=np.int64)  # of link (a, b), a < b: linked at no range yet
-    lo = np.full((m, mp), -_INF)  # the bounds of the band, never crossed off the links
-    hi = np.full((m, mp), _INF)
+    bounds = np.empty((2, m, mp))
+    bounds[0] = -_INF
+    bounds[1] = _INF
     for a in range(m):
-        lo[a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
+        bounds[0, a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
     nw = (m + 63) // 64
-    adj = np.zeros((nr, m, nw), dtype=np.uint64)
-    routed = np.zeros((nr, nw), dtype=np.uint64)
-    knows = np.zeros((nr, n), dtype=np.bool_)
-    spread = np.zeros(nw, dtype=np.uint64)
-    stack = np.empty(m, dtype=np.int64)
-    changed = np.ones(nr, dtype=np.bool_)
-    in_range = np.zeros(n, dtype=np.bool_)
-    pass_start = np.zeros(n, dtype=np.int64)
-    sensed, counted = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
-    det_step = detector = -1
     (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable,
-     connected) = _records(nr, cp_steps.shape[0])
-    ci = 0
-    key = np.empty(mp)
-    for k in range(end + 1):
-        ci = _open_step(k, cp_steps, ci, going, reach_cum, conn_cum, acc_reach, acc_conn)
-        first = _observe(k, last, positions, px, py, fade, unit, no_params, rng_shadow, p,
-                         in_range, pass_start, sensed, rng_look)
-        if det_step < 0 and first >= 0:
-            det_step, detector = k, first
-        new_knower = False
-        for i in range(n):
-            new_knower |= sensed[i] and not counted[i]
-            counted[i] = sensed[i]
-        if k <= last or shadowed:  # a settled team's graph is that of its last traced step
-            for a in range(m):
-                xa, ya, za = px[a], py[a], pz[a]
-                out = False
-                for b in range(mp):  # the row as graph.links computes it
-                    dx = xa - px[b]
-                    dy = ya - py[b]
-                    dz = za - pz[b]
-                    v = dx * dx + dy * dy + dz * dz
-                    key[b] = v
-                    out |= (v <= lo[a, b]) | (v > hi[a, b])
-                if not (out or shadowed):
-                    continue
-                for b in range(a + 1, m):
-                    v = _effective(key[b], fade[a, b]) if shadowed else key[b]
-                    if lo[a, b] < v <= hi[a, b]:
-                        continue
-                    now = np.searchsorted(thr, v)  # the ranges below the key
-                    for j in range(min(now, band[a, b]), max(now, band[a, b])):
-                        _toggle(adj[j], a, b)
-                        changed[j] = True
-                    band[a, b] = now
-                    lo[a, b] = thr[now - 1] if now > 0 else -_INF
-                    hi[a, b] = thr[now] if now < nr else _INF
-        for j in range(nr):
-            if changed[j]:
-                graph.bs_component(adj[j], n, routed[j], stack)
-                reachable[j], connected[j] = graph.reachability(adj[j], routed[j], n,
-                                                                p.reachability)
-            if det_step >= 0 and notified[j] < 0 and (changed[j] or new_knower):
-                for i in range(n):
-                    knows[j, i] |= sensed[i]
-                if graph.flood(adj[j], routed[j], knows[j], spread, stack):
-                    notified[j] = k
-            changed[j] = False
-        _close_step(k, p, det_step, notified, going, reachable, connected, acc_reach,
-                    acc_conn, n)
-    back = np.empty(nr, dtype=np.int64)
-    back[rank] = np.arange(nr)
-    return Critical(det_step, detector, np.empty(0, dtype=np.int64), np.empty(0),
-                    notified[back], reach_cum[back], conn_cum[back])
+     connected) = _records(nr, checkpoints)
+    return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds, np.empty(mp),
+                   np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
+                   np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
+                   np.ones(nr, dtype=np.bool_), notified, reach_cum, conn_cum, acc_reach,
+                   acc_conn, going, reachable, connected)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray,
+                shadowed: bool, rd: Reading) -> None:
+    """Bring the graph at every range up to date with this step's positions and fades.
+
+    Every link sits in a *band*, the number of ranges below its key: it exists at the ranges
+    from its band on. Every key is computed as the kernel's link pass computes ``d²`` (whole
+    padded rows, in vectors) and compared with its band's bounds; only a link that left its
+    band changes a graph, and only at the ranges between its old and new band.
+    """
+    m = rd.band.shape[0]
+    mp = px.shape[0]
+    key, lo, hi, thr = rd.key, rd.bounds[0], rd.bounds[1], rd.thr
+    nr = thr.shape[0]
+    for a in range(m):
+        xa, ya, za = px[a], py[a], pz[a]
+        out = False
+        for b in range(mp):  # the row as graph.links computes it
+            dx = xa - px[b]
+            dy = ya - py[b]
+            dz = za - pz[b]
+            v = dx * dx + dy * dy + dz * dz
+            key[b] = v
+            out |= (v <= lo[a, b]) | (v > hi[a, b])
+        if not (out or shadowed):
+            continue
+        for b in range(a + 1, m):
+            v = _effective(key[b], fade[a, b]) if shadowed else key[b]
+            if lo[a, b] < v <= hi[a, b]:
+                continue
+            now = np.searchsorted(thr, v)  # the ranges below the key
+            was = rd.band[a, b]
+            for j in range(min(now, was), max(now, was)):
+                _toggle(rd.adj[j], a, b)
+                rd.changed[j] = True
+            rd.band[a, b] = now
+            lo[a, b] = thr[now - 1] if now > 0 else -_INF
+            hi[a, b] = thr[now] if now < nr else _INF
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
+              py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
+              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading) -> None:
+    """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
+    first of them), the graph (the kernel's link pass at every range), the BS's component, reachability and the knowledge's flood (the kernel's own
+    functions, :mod:`sarlink.engine.graph`), the notification and the step's records.
+
+    A range's component and reachability are found again only when its graph changed, and
+    its knowledge flooded again only when its graph or the knowers changed and its BS is not
+    notified yet. ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
+    and ``sensed`` the drones that sensed the target (a range-free flight floods nothing).
+    """
+    n = sensed.shape[0]
+    _open_step(k, cp_steps, ci, rd.going, rd.reach_cum, rd.conn_cum, rd.acc_reach,
+               rd.acc_conn)
+    new_knower = False
+    for i in range(n):
+        new_knower |= sensed[i] and not rd.counted[i]
+        rd.counted[i] = sensed[i]
+    _band_links(px, py, pz, fade, p.sigma > 0.0, rd)
+    for j in range(rd.thr.shape[0]):
+        if rd.changed[j]:
+            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
+            rd.reachable[j], rd.connected[j] = graph.reachability(rd.adj[j], rd.routed[j], n,
+                                                                  p.reachability)
+        if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
+            for i in range(n):
+                rd.knows[j, i] |= sensed[i]
+            if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
+                rd.notified[j] = k
+        rd.changed[j] = False
+    _close_step(k, p, 0 if detected else -1, rd.notified, rd.going, rd.reachable,
+                rd.connected, rd.acc_reach, rd.acc_conn, n)
+
+
+@njit(cache=True, error_model="numpy")
+def carry_reading(start: int, p: Params, cp_steps: np.ndarray, ci: int, rd: Reading) -> None:
+    """A settled team: every range whose run goes on observes its last step again to the
+    horizon (:func:`sarlink.engine.records.carry_records`)."""
+    n = rd.counted.shape[0]
+    for j in range(rd.thr.shape[0]):
+        if rd.going[j]:
+            records.carry_records(start, p.n_steps, cp_steps, ci, rd.reach_cum[j],
+                                  rd.conn_cum[j], rd.acc_reach[j], rd.acc_conn[j],
+                                  p.dt if rd.reachable[j] else 0.0,
+                                  p.dt * rd.connected[j] / n)
+
+
+@njit(cache=True, error_model="numpy")
+def read_records(rd: Reading) -> records.AtRanges:
+    """Each range's records, in the order of the ranges as given."""
+    back = np.empty_like(rd.rank)
+    back[rd.rank] = np.arange(rd.rank.shape[0])
+    return records.AtRanges(rd.notified[back], rd.reach_cum[back], rd.conn_cum[back])
 
 
 @njit(cache=True, error_model="numpy")
 def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
              end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-             cp_steps: np.ndarray, r2s: np.ndarray, stairs: bool) -> Critical:
-    """The critical ranges of steps ``0 .. end`` of a range-free flight, and its records at
-    every squared range of ``r2s``, summed step by step in the kernel's order.
+             cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
+    """The critical ranges of steps ``0 .. end`` of a range-free flight (its notification
+    staircase, from every step's minimum spanning tree), and its records at every squared
+    range of ``r2s``, summed step by step in the kernel's order.
 
-    With ``stairs``, the notification staircase, from every step's minimum spanning tree
-    (:func:`_staircase`); without it, only the records at the ranges of ``r2s``, from the
-    graph at each of them kept up to date (:func:`_bands`, about half the cost at 8 ranges),
-    and an empty staircase.
-
-    ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them; a
-    team that settled has fewer rows, and its last holds for the later steps. ``rng_shadow``
-    and ``rng_look`` are fresh copies of the run's streams; ``unit`` is ``p`` with ``r_c = 1``,
-    with which the log-normal radio's ``update`` draws the bare fades.
+    ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them
+    (``Params.trace``); a team that settled has fewer rows, and its last holds for the later
+    steps. ``rng_shadow`` and ``rng_look`` are fresh copies of the run's streams; ``unit`` is
+    ``p`` with ``r_c = 1``, with which the log-normal radio's ``update`` draws the bare fades.
     """
-    if stairs:
-        return _staircase(p, unit, target_x, target_y, positions, end, rng_shadow, rng_look,
-                          cp_steps, r2s)
-    return _bands(p, unit, target_x, target_y, positions, end, rng_shadow, rng_look, cp_steps,
-                  r2s)
+    return _staircase(p, unit, target_x, target_y, positions, end, rng_shadow, rng_look,
+                      cp_steps, r2s)

@@ -31,6 +31,18 @@ class Track(NamedTuple):
     links: np.ndarray  # (steps, N + 2, words) uint64 adjacency bitsets
 
 
+class AtRanges(NamedTuple):
+    """A range-free flight's records at each range it was read at as it flew
+    (:mod:`sarlink.engine.ranges`), in the order of the ranges given; empty otherwise."""
+
+    notified: np.ndarray
+    """Per range: the step of the notification (``-1``: never)."""
+    reach_cum: np.ndarray
+    """``(ranges, checkpoints)``: ``reach_cum`` at each range."""
+    conn_cum: np.ndarray
+    """``(ranges, checkpoints)``: ``conn_cum`` at each range."""
+
+
 class RunRecord(NamedTuple):
     """One run as the kernel returns it (times in seconds; ``-1``: never)."""
 
@@ -47,6 +59,9 @@ class RunRecord(NamedTuple):
     track: Track
     """The trajectory, empty (zero steps) unless the run was recorded; a traced run
     (``Params.trace``) has only the positions."""
+    at_ranges: AtRanges
+    """The records at each range of a flight read at several ranges (then the run's own
+    notification, immediacy and records above are not kept)."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")

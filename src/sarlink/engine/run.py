@@ -34,7 +34,7 @@ from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
 from sarlink.engine.ranges import Critical, critical
-from sarlink.engine.records import RunRecord
+from sarlink.engine.records import AtRanges, RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
 from sarlink.engine.streams import Streams, copied, run_streams
@@ -117,9 +117,11 @@ class Prepared:
         return kernel_for(self.steering.rule, get_radio(self.mission.radio))
 
     def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
-                  traced_at: float | None = None) -> tuple[object, ...]:
+                  traced_at: float | None = None, read_at: Sequence[float] = ()
+                  ) -> tuple[object, ...]:
         """The kernel's arguments for one run from its random streams and initial conditions;
-        ``traced_at``: a traced flight (``Params.trace``) at that range instead."""
+        ``traced_at``: a traced flight (``Params.trace``) at that range instead; ``read_at``:
+        a flight read at each of those ranges as it flies (its radio at ``r_c = 1``)."""
         n = self.mission.team.drones
         if scenario.positions is None:
             pos0 = np.tile(np.asarray(self.mission.area.bs_xy, dtype=float), (n, 1))
@@ -128,18 +130,21 @@ class Prepared:
         p = self.params._replace(record=trajectory)
         if traced_at is not None:
             p = p._replace(rc=traced_at, trace=True)
+        if read_at:
+            p = p._replace(rc=1.0)
         return (p, self.radio_params,
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
                 takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
                                  streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, streams.rule,
-                self.edges, self.nav, self.far)
+                self.edges, self.nav, self.far, np.array([rc * rc for rc in read_at]))
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
-               traced_at: float | None = None) -> RunRecord:
+               traced_at: float | None = None, read_at: Sequence[float] = ()) -> RunRecord:
         """The kernel's record of one run from its random streams and initial conditions."""
         kernel = self.kernel
-        args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at)
+        args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at,
+                              read_at=read_at)
         if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
             return kernel(*args)
         try:
@@ -166,9 +171,7 @@ class Prepared:
         """Simulate run ``run`` of an experiment seeded with ``seed`` (with that run's own
         routes if the steering makes them per run)."""
         if self.steering.per_run is not None:
-            own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
-            return Prepared.build(self.mission, own).run(seed, run, scenario=scenario,
-                                                         trajectory=trajectory)
+            return self._own(seed, run).run(seed, run, scenario=scenario, trajectory=trajectory)
         streams, scenario = self._start(seed, run, scenario)
         rec = self.record(streams, scenario, trajectory=trajectory)
         traj = None
@@ -191,20 +194,22 @@ class Prepared:
         return (get_radio(self.mission.radio).range_free and self.params.on_detect != REPORT
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
-    def critical(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = True,
+    def _own(self, seed: int, run: int) -> Prepared:
+        """This mission with run ``run``'s own plan, if its steering plans per run."""
+        if self.steering.per_run is None:
+            return self
+        own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
+        return Prepared.build(self.mission, own)
+
+    def critical(self, seed: int, run: int, rcs: Sequence[float], *,
                  scenario: Scenario | None = None) -> tuple[Scenario, RunRecord, Critical]:
         """One traced flight of a range-free mission (``Params.trace``: positions only, flown
-        to the horizon or the detection if it stops there), its critical ranges and its
-        records at each range of ``rcs``; with the run's initial conditions and the flight's
-        own record. Without ``staircase``, the staircase is empty."""
-        if self.steering.per_run is not None:  # this run's own plan
-            own = replace(self.steering, routes=self.steering.per_run(seed, run), per_run=None)
-            return Prepared.build(self.mission, own).critical(seed, run, rcs,
-                                                              staircase=staircase,
-                                                              scenario=scenario)
-        if not self.range_free:
-            raise ValueError(f"{self.mission.team.planner} with these settings flies "
-                             "differently at each range: fly each range")
+        to the horizon or the detection if it stops there), its critical ranges (the
+        notification staircase) and its records at each range of ``rcs``; with the run's
+        initial conditions and the flight's own record."""
+        if self.steering.per_run is not None:
+            return self._own(seed, run).critical(seed, run, rcs, scenario=scenario)
+        self._check_range_free()
         streams, scenario = self._start(seed, run, scenario)
         # the looks and fades, drawn again as the flight draws them
         shadow, look = copied(streams.shadow), copied(streams.look)
@@ -215,21 +220,34 @@ class Prepared:
         crit = critical(p, p._replace(rc=1.0), float(scenario.target[0]),
                         float(scenario.target[1]), positions,
                         positions.shape[0] - 1 if stopped else p.n_steps, shadow, look,
-                        self.cp_steps, np.array([rc * rc for rc in rcs]), staircase)
+                        self.cp_steps, np.array([rc * rc for rc in rcs]))
         return scenario, rec, crit
+
+    def _check_range_free(self) -> None:
+        if not self.range_free:
+            raise ValueError(f"{self.mission.team.planner} with these settings flies "
+                             "differently at each range: fly each range")
 
     def run_ranges(self, seed: int, run: int, rcs: Sequence[float], *, staircase: bool = False,
                    scenario: Scenario | None = None) -> list[RunResult]:
         """Run ``run`` at every range of ``rcs`` from one flight (a range-free mission only):
         the same results, bit for bit, as :meth:`run` with the mission at each range; with
         ``staircase``, each also with its notification staircase
-        (:attr:`sarlink.RunResult.notify_times`)."""
+        (:attr:`sarlink.RunResult.notify_times`), read after the flight from its positions
+        (:meth:`critical`); without it, the flight is read at each range as it flies."""
         p = self.params
-        scenario, rec, crit = self.critical(seed, run, rcs, staircase=staircase,
-                                            scenario=scenario)
+        if staircase:
+            scenario, rec, crit = self.critical(seed, run, rcs, scenario=scenario)
+            at = AtRanges(crit.notified, crit.reach_cum, crit.conn_cum)
+        else:
+            own = self._own(seed, run)
+            own._check_range_free()
+            streams, scenario = own._start(seed, run, scenario)
+            rec = own.record(streams, scenario, read_at=rcs)
+            at = rec.at_ranges
         target = (float(scenario.target[0]), float(scenario.target[1]))
         out = []
-        for j, k in enumerate(crit.notified.tolist()):
+        for j, k in enumerate(at.notified.tolist()):
             t_notify = None if k < 0 else float(k * p.dt)
             stairs: dict[str, Any] = {}
             if staircase:  # a run stopped at its notification knows its staircase up to there
@@ -242,8 +260,8 @@ class Prepared:
                 t_detect=None if rec.t_detect < 0 else rec.t_detect, t_notify=t_notify,
                 immediate=t_notify is not None and t_notify == rec.t_detect,
                 detector=None if rec.detector < 0 else rec.detector,
-                checkpoints=rec.checkpoints, reach_cum=crit.reach_cum[j],
-                connected_cum=crit.conn_cum[j], **stairs))
+                checkpoints=rec.checkpoints, reach_cum=at.reach_cum[j],
+                connected_cum=at.conn_cum[j], **stairs))
         return out
 
 def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
