@@ -241,13 +241,13 @@ def test_a_one_range_job_flies_as_before_unless_asked_for_the_staircase(
     from sarlink.simulation import plugins_in_code
 
     read = []
-    original = Prepared.critical
+    original = Prepared.run_ranges
 
     def counted(self: Prepared, *args: object, **kwargs: object) -> object:
         read.append(1)
         return original(self, *args, **kwargs)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(Prepared, "critical", counted)
+    monkeypatch.setattr(Prepared, "run_ranges", counted)
     one = Mission.build(planner="covb", drones=4, rc=700.0, horizon=800.0)
     text = one.model_dump_json()
     (plain,) = execution._run_chunk([text], 2, 0, 3, False, plugins_in_code())

@@ -337,6 +337,9 @@ class Reading(NamedTuple):
     """``(N,)``: the drones whose sensing is already in ``knows``."""
     changed: np.ndarray
     """``(ranges,)``: whether the graph at a range changed this step."""
+    moved: np.ndarray
+    """``(ranges,)``: whether the BS's component or the target's links may have changed with
+    it (:func:`_band_links`)."""
     notified: np.ndarray
     """Per range: the step of the notification (``-1``: never)."""
     reach_cum: np.ndarray
@@ -373,7 +376,7 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
     return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds, np.empty(mp),
                    np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
-                   np.ones(nr, dtype=np.bool_), notified, reach_cum, conn_cum, acc_reach,
+                   np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified, reach_cum, conn_cum, acc_reach,
                    acc_conn, going, reachable, connected)
 
 
@@ -385,7 +388,9 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     Every link sits in a *band*, the number of ranges below its key: it exists at the ranges
     from its band on. Every key is computed as the kernel's link pass computes ``d²`` (whole
     padded rows, in vectors) and compared with its band's bounds; only a link that left its
-    band changes a graph, and only at the ranges between its old and new band.
+    band changes a graph, and only at the ranges between its old and new band. The BS's
+    component changes only where a new link joins it to a node outside or a lost link
+    joined two nodes in it; reachability also where the target's links change.
     """
     m = rd.band.shape[0]
     mp = px.shape[0]
@@ -412,6 +417,10 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
             for j in range(min(now, was), max(now, was)):
                 _toggle(rd.adj[j], a, b)
                 rd.changed[j] = True
+                if not rd.moved[j]:  # the component as of the step before, still right
+                    joined = graph.has(rd.routed[j], a), graph.has(rd.routed[j], b)
+                    rd.moved[j] = b == m - 1 or (joined[0] != joined[1] if now < was
+                                                 else joined[0] and joined[1])
             rd.band[a, b] = now
             lo[a, b] = thr[now - 1] if now > 0 else -_INF
             hi[a, b] = thr[now] if now < nr else _INF
@@ -427,7 +436,8 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
 
     A range's component and reachability are found again only when its graph changed, and
     its knowledge flooded again only when its graph or the knowers changed and its BS is not
-    notified yet. ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
+    notified yet (only its component if a change may have moved it, :func:`_band_links`).
+    ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
     and ``sensed`` the drones that sensed the target (a range-free flight floods nothing).
     """
     n = sensed.shape[0]
@@ -439,7 +449,7 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
         rd.counted[i] = sensed[i]
     _band_links(px, py, pz, fade, p.sigma > 0.0, rd)
     for j in range(rd.thr.shape[0]):
-        if rd.changed[j]:
+        if rd.moved[j]:
             graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
             rd.reachable[j], rd.connected[j] = graph.reachability(rd.adj[j], rd.routed[j], n,
                                                                   p.reachability)
@@ -448,7 +458,7 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
                 rd.knows[j, i] |= sensed[i]
             if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
                 rd.notified[j] = k
-        rd.changed[j] = False
+        rd.changed[j] = rd.moved[j] = False
     _close_step(k, p, 0 if detected else -1, rd.notified, rd.going, rd.reachable,
                 rd.connected, rd.acc_reach, rd.acc_conn, n)
 
