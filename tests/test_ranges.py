@@ -120,6 +120,17 @@ def test_runs_stopped_early(stop: str) -> None:
         check(mission, run, [300.0, 700.0, 1200.0])
 
 
+@pytest.mark.parametrize("shadowing", ["period", "run", "correlated"])
+@pytest.mark.parametrize("planner", ["covb", "mtsp"])
+def test_every_way_of_drawing_the_fades(shadowing: str, planner: str) -> None:
+    """The fades redrawn each coherence time, once per run (a landed mTSP team then settles
+    under shadowing) or drifting with the distance flown: read at every range as drawn."""
+    mission = Mission.build(planner=planner, drones=5, rc=700.0, sigma=6.0,
+                            shadowing=shadowing, horizon=3000.0)
+    for run in range(3):
+        check(mission, run, [200.0, 700.0, 1300.0, 2500.0])
+
+
 def test_per_period_looks_of_a_settled_team() -> None:
     """mTSP drones land and settle; with per-period looks a landed drone may still sense the
     target later, and at some ranges knows it already: the flight's end is not every
