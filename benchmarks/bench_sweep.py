@@ -114,14 +114,12 @@ def per_run_costs(experiment: Experiment, repeats: int = 20) -> dict[str, float]
     _, mission = experiment.points()[0]
     prepared = prepare(mission)
     results = [prepared.run(experiment.seed, k) for k in range(runs)]
-    rows = [r.row() for r in results]
-    table = run_table(mission, experiment.seed, rows)
+    table = run_table(mission, experiment.seed, results)
     best: dict[str, float] = {}
     with tempfile.TemporaryDirectory() as tmp, open_store(tmp, experiment) as store:
         steps: dict[str, Callable[[], object]] = {
-            "RunResult.row()": lambda: [r.row() for r in results],
-            "rows to an Arrow table (storage.run_table)": lambda: run_table(
-                mission, experiment.seed, rows),
+            "runs to an Arrow table (storage.run_table)": lambda: run_table(
+                mission, experiment.seed, results),
             "table to the sweeping process (pickle both ways)": lambda: pickle.loads(
                 pickle.dumps(table)),
             "Parquet file, atomic, fsync (Store.write)": lambda: store.write(

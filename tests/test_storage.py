@@ -13,7 +13,7 @@ import pandas as pd
 import pyarrow.parquet as pq
 import pytest
 
-from sarlink import ConfigError, Experiment, load, prepare
+from sarlink import ConfigError, Experiment, Mission, load, prepare
 from sarlink.execution import _plan
 from sarlink.metrics import summarize
 from sarlink.storage import (
@@ -38,8 +38,8 @@ def write(store: Store, point: Point, runs: range, seed: int | None = None) -> N
     """Runs of ``point`` computed here and stored as a sweep stores them."""
     seed = store.seed if seed is None else seed
     prepared = prepare(point.mission)
-    rows = [prepared.run(seed, k).row() for k in runs]
-    store.write(point, runs, run_table(point.mission, seed, rows))
+    results = [prepared.run(seed, k) for k in runs]
+    store.write(point, runs, run_table(point.mission, seed, results))
 
 
 def fill(out: Path, exp: Experiment) -> None:
@@ -259,3 +259,26 @@ def test_result_files_read_with_pandas_as_sarlink_loads_them(tmp_path: Path) -> 
     assert len(read) == 24
     for name in ("run", "planner", "t_detect", "t_notify", "target_x"):
         pd.testing.assert_series_equal(read[name], loaded[name], check_dtype=False)
+
+
+@pytest.mark.parametrize("staircase", [False, True])
+def test_a_table_built_whole_equals_one_built_from_its_rows(staircase: bool) -> None:
+    """run_table builds its outcome columns whole; Arrow's own reading of the rows
+    (``Table.from_pylist`` of :meth:`RunResult.row`, each with its own interpolation at the
+    horizon) gives the same table, types included: runs stopped early (NaN records), never
+    detected and with their staircases."""
+    import pyarrow as pa
+
+    mission = Mission.build(planner="covb", drones=4, horizon=900.0, stop="notified")
+    prepared = prepare(mission)
+    results = [r for k in range(8)
+               for r in prepared.run_ranges(3, k, [150.0, 900.0], staircase=staircase)]
+    assert any(r.t_notify is None for r in results) and any(r.t_notify for r in results)
+    table = run_table(mission, 3, results)
+    rows = pa.Table.from_pylist([
+        {**r.row(), "t_reachable": r.t_reachable(), "connected_fraction": r.connected_fraction()}
+        for r in results])
+    outcomes = table.select(rows.column_names)
+    assert outcomes.schema == rows.schema
+    assert outcomes.to_pandas().equals(rows.to_pandas())
+    assert ("notify_times" in table.column_names) is staircase

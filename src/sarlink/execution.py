@@ -147,13 +147,10 @@ def _run_chunk(mission_jsons: list[str], seed: int, start: int, stop: int, stair
     prepared = [prepare(mission) for mission in missions]
     if (len(missions) > 1 or staircase) and _one_flight(prepared):
         rcs = [m.channel.rc for m in missions]
-        rows: list[list[dict[str, Any]]] = [[] for _ in missions]
-        for k in range(start, stop):
-            results = prepared[0].run_ranges(seed, k, rcs, staircase=staircase)
-            for at_rc, result in zip(rows, results, strict=True):
-                at_rc.append(result.row())
-        return [storage.run_table(m, seed, r) for m, r in zip(missions, rows, strict=True)]
-    return [storage.run_table(m, seed, [p.run(seed, k).row() for k in range(start, stop)])
+        by_range = zip(*(prepared[0].run_ranges(seed, k, rcs, staircase=staircase)
+                         for k in range(start, stop)), strict=True)
+        return [storage.run_table(m, seed, r) for m, r in zip(missions, by_range, strict=True)]
+    return [storage.run_table(m, seed, [p.run(seed, k) for k in range(start, stop)])
             for m, p in zip(missions, prepared, strict=True)]
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -86,23 +87,41 @@ class RunResult:
         return float(np.interp(td, self.checkpoints, self.connected_cum)) / td
 
     def row(self) -> dict[str, Any]:
-        """A flat record for tables: missing event times are NaN; a staircase as two more
-        columns."""
-        return {
-            "seed": self.seed,
-            "run": self.run,
-            "target_x": self.target[0],
-            "target_y": self.target[1],
-            "t_detect": math.nan if self.t_detect is None else self.t_detect,
-            "t_notify": math.nan if self.t_notify is None else self.t_notify,
-            "immediate": self.immediate,
-            "detector": -1 if self.detector is None else self.detector,
-            "t_reachable": self.t_reachable(),
-            "connected_fraction": self.connected_fraction(),
-            "checkpoints": self.checkpoints.tolist(),
-            "reach_cum": self.reach_cum.tolist(),
-            "connected_cum": self.connected_cum.tolist(),
-            **({} if self.notify_times is None or self.notify_rc2 is None else {
-                "notify_times": self.notify_times.tolist(),
-                "notify_rc2": self.notify_rc2.tolist()}),
-        }
+        """A flat record for tables (the row of :func:`result_columns`): missing event times
+        are NaN; a staircase as two more columns."""
+        return {name: column[0].tolist() for name, column in result_columns([self]).items()}
+
+
+def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
+    """The columns of a table of runs with the same checkpoints (one mission's), a row per
+    run: arrays, and the per-checkpoint records as 2-D arrays (run × checkpoint); a staircase,
+    if every run has one, as a list of arrays. Built whole, not row by row, because a
+    sweep's tables are made of them."""
+    def times(values: list[float | None]) -> np.ndarray:
+        return np.array([math.nan if v is None else v for v in values], dtype=float)
+
+    reach = np.stack([r.reach_cum for r in results])
+    connected = np.stack([r.connected_cum for r in results])
+    horizons = np.array([r.horizon for r in results])
+    columns: dict[str, Any] = {
+        "seed": np.array([r.seed for r in results], dtype=np.int64),
+        "run": np.array([r.run for r in results], dtype=np.int64),
+        "target_x": np.array([r.target[0] for r in results], dtype=float),
+        "target_y": np.array([r.target[1] for r in results], dtype=float),
+        "t_detect": times([r.t_detect for r in results]),
+        "t_notify": times([r.t_notify for r in results]),
+        "immediate": np.array([r.immediate for r in results], dtype=bool),
+        "detector": np.array([-1 if r.detector is None else r.detector for r in results],
+                             dtype=np.int64),
+        # RunResult.t_reachable() and .connected_fraction() at the horizon, the last
+        # checkpoint, where the interpolation gives the last record exactly
+        "t_reachable": reach[:, -1].copy(),
+        "connected_fraction": connected[:, -1] / horizons,
+        "checkpoints": np.stack([r.checkpoints for r in results]),
+        "reach_cum": reach,
+        "connected_cum": connected,
+    }
+    if all(r.notify_times is not None and r.notify_rc2 is not None for r in results):
+        columns["notify_times"] = [r.notify_times for r in results]
+        columns["notify_rc2"] = [r.notify_rc2 for r in results]
+    return columns

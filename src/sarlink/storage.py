@@ -39,6 +39,7 @@ import pyarrow.parquet as pq
 
 from sarlink.config import ConfigError, Experiment, Mission, mission_hash
 from sarlink.config.mission import flat_groups
+from sarlink.result import RunResult, result_columns
 
 __all__ = ["MANIFEST", "Point", "Store", "load", "open_store", "read_manifest", "run_table"]
 
@@ -109,28 +110,42 @@ def _repeated(name: str, value: Any, n: int) -> pa.Array:
     return column
 
 
-def run_table(mission: Mission, seed: int, rows: Sequence[dict[str, Any]]) -> pa.Table:
+def run_table(mission: Mission, seed: int, results: Sequence[RunResult]) -> pa.Table:
     """Runs of ``mission`` as one tidy table: seed, run, every flat parameter, the outcomes.
 
-    ``rows`` are :meth:`sarlink.RunResult.row` records. The point's hash, the seed and the
+    The outcomes are the columns of :func:`sarlink.result.result_columns`, as
+    :meth:`sarlink.RunResult.row` gives a row of them. The point's hash, the seed and the
     column names are kept in the schema metadata, so that a file can be checked against the
     folder it lies in and a damaged footer that renames columns is caught.
     """
-    outcomes = pa.Table.from_pylist(list(rows))
+    outcomes = {name: _arrow(column) for name, column in result_columns(results).items()}
     params = mission.params()
-    clash = set(params) & set(outcomes.column_names)
+    clash = set(params) & set(outcomes)
     if clash:
         raise ValueError(f"run outcomes and mission parameters share names: {sorted(clash)}")
-    n = outcomes.num_rows
+    n = len(results)
     columns = {
-        "seed": outcomes["seed"],
-        "run": outcomes["run"],
+        "seed": outcomes.pop("seed"),
+        "run": outcomes.pop("run"),
         **{name: _repeated(name, params[name], n) for name in _param_columns()},
-        **{name: outcomes[name] for name in outcomes.column_names if name not in ("seed", "run")},
+        **outcomes,
     }
     meta = {_POINT_KEY: mission_hash(mission).encode(), _SEED_KEY: str(seed).encode(),
             _COLUMNS_KEY: json.dumps(list(columns)).encode()}
     return pa.table(columns).replace_schema_metadata(meta)
+
+
+def _arrow(column: np.ndarray | list[np.ndarray]) -> pa.Array:
+    """A column of :func:`~sarlink.result.result_columns` as Arrow: a 2-D array or a list
+    of arrays as a column of lists of doubles, as ``Table.from_pylist`` types them."""
+    if isinstance(column, list) or column.ndim == 2:
+        lengths = [len(row) for row in column]
+        offsets = np.zeros(len(lengths) + 1, dtype=np.int32)
+        np.cumsum(lengths, out=offsets[1:])
+        values = np.concatenate(column, axis=None) if len(column) else np.empty(0)
+        return pa.ListArray.from_arrays(pa.array(offsets),
+                                        pa.array(values.astype(float, copy=False)))
+    return pa.array(column)
 
 
 def _problem(table: pa.Table, point: str, seed: int, runs: range) -> str | None:
