@@ -138,14 +138,17 @@ def run_table(mission: Mission, seed: int, results: Sequence[RunResult]) -> pa.T
 def _arrow(column: np.ndarray | list[np.ndarray]) -> pa.Array:
     """A column of :func:`~sarlink.result.result_columns` as Arrow: a 2-D array or a list
     of arrays as a column of lists of doubles, as ``Table.from_pylist`` types them."""
-    if isinstance(column, list) or column.ndim == 2:
-        lengths = [len(row) for row in column]
-        offsets = np.zeros(len(lengths) + 1, dtype=np.int32)
-        np.cumsum(lengths, out=offsets[1:])
-        values = np.concatenate(column, axis=None) if len(column) else np.empty(0)
-        return pa.ListArray.from_arrays(pa.array(offsets),
-                                        pa.array(values.astype(float, copy=False)))
-    return pa.array(column)
+    if isinstance(column, list):
+        lengths = np.array([len(row) for row in column], dtype=np.int32)
+        values = np.concatenate(column) if column else np.empty(0)
+    elif column.ndim == 2:
+        lengths = np.full(column.shape[0], column.shape[1], dtype=np.int32)
+        values = column.ravel()
+    else:
+        return pa.array(column)
+    offsets = np.zeros(len(lengths) + 1, dtype=np.int32)
+    np.cumsum(lengths, out=offsets[1:])
+    return pa.ListArray.from_arrays(pa.array(offsets), pa.array(values.astype(float, copy=False)))
 
 
 def _problem(table: pa.Table, point: str, seed: int, runs: range) -> str | None:

@@ -351,10 +351,11 @@ class Reading(NamedTuple):
     acc_conn: np.ndarray
     going: np.ndarray
     """Per range: whether its run goes on."""
-    reachable: np.ndarray
-    """Per range: whether the target is reachable at this step."""
-    connected: np.ndarray
-    """Per range: how many drones have a route to the BS at this step."""
+    d_reach: np.ndarray
+    """Per range: what this step adds to ``acc_reach`` (``dt`` if the target is reachable)."""
+    d_conn: np.ndarray
+    """Per range: what it adds to ``acc_conn`` (``dt`` times the fraction of drones with a
+    route to the BS), both as the kernel computes them."""
 
 
 @njit(cache=True, error_model="numpy")
@@ -371,13 +372,12 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
     for a in range(m):
         bounds[0, a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
     nw = (m + 63) // 64
-    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable,
-     connected) = _records(nr, checkpoints)
+    notified, reach_cum, conn_cum, acc_reach, acc_conn, going, _, _ = _records(nr, checkpoints)
     return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds, np.empty(mp),
                    np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
                    np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified, reach_cum, conn_cum, acc_reach,
-                   acc_conn, going, reachable, connected)
+                   acc_conn, going, np.zeros(nr), np.zeros(nr))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -448,32 +448,42 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
         new_knower |= sensed[i] and not rd.counted[i]
         rd.counted[i] = sensed[i]
     _band_links(px, py, pz, fade, p.sigma > 0.0, rd)
+    notified_now = False
     for j in range(rd.thr.shape[0]):
         if rd.moved[j]:
             graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
-            rd.reachable[j], rd.connected[j] = graph.reachability(rd.adj[j], rd.routed[j], n,
-                                                                  p.reachability)
+            reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
+                                                      p.reachability)
+            rd.d_reach[j] = p.dt if reachable else 0.0
+            rd.d_conn[j] = p.dt * connected / n
         if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
             for i in range(n):
                 rd.knows[j, i] |= sensed[i]
             if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
                 rd.notified[j] = k
+                notified_now = True
         rd.changed[j] = rd.moved[j] = False
-    _close_step(k, p, 0 if detected else -1, rd.notified, rd.going, rd.reachable,
-                rd.connected, rd.acc_reach, rd.acc_conn, n)
+    # the step's records, added at every range at once: a range whose run stopped takes no
+    # more checkpoints (_open_step), so what is added to it after does not matter
+    if k == p.n_steps or (p.stop == STOP_DETECTED and detected):
+        rd.going[:] = False
+    elif p.stop == STOP_NOTIFIED and notified_now:
+        for j in range(rd.thr.shape[0]):
+            rd.going[j] &= rd.notified[j] < 0
+    for j in range(rd.thr.shape[0]):
+        rd.acc_reach[j] += rd.d_reach[j]
+        rd.acc_conn[j] += rd.d_conn[j]
 
 
 @njit(cache=True, error_model="numpy")
 def carry_reading(start: int, p: Params, cp_steps: np.ndarray, ci: int, rd: Reading) -> None:
     """A settled team: every range whose run goes on observes its last step again to the
     horizon (:func:`sarlink.engine.records.carry_records`)."""
-    n = rd.counted.shape[0]
     for j in range(rd.thr.shape[0]):
         if rd.going[j]:
             records.carry_records(start, p.n_steps, cp_steps, ci, rd.reach_cum[j],
                                   rd.conn_cum[j], rd.acc_reach[j], rd.acc_conn[j],
-                                  p.dt if rd.reachable[j] else 0.0,
-                                  p.dt * rd.connected[j] / n)
+                                  rd.d_reach[j], rd.d_conn[j])
 
 
 @njit(cache=True, error_model="numpy")
