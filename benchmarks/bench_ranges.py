@@ -1,15 +1,16 @@
 """CPU of a sweep over 8 communication ranges against a sweep over one (issue 22).
 
-A range-free team (here CovB) flies once per run for every range of a grid over ``rc``
-(:mod:`sarlink.engine.ranges`); a sweep over one range flies as it always did. This script
-sweeps CovB over 8 ranges and over one with the sweep's own code (planning, jobs, tables,
-Parquet files) but its jobs run in this process, so that the CPU time is that of the work,
+A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
+read at each range as it flies (:mod:`sarlink.engine.ranges`); a sweep over one range flies
+as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
+sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
+default chunk) but its jobs run in this process, so that the CPU time is that of the work,
 without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
-are equal. It also times the engine alone per run: a plain flight, a traced flight with its
-critical ranges read at one range, and read at 8 ranges.
+are equal. It also times the engine alone per run: a plain flight, a flight read at one
+range and at 8, and a traced flight read at 8 with the staircase.
 Run with
 
-    python benchmarks/bench_ranges.py --runs 200 --out benchmarks/results/ranges.md
+    python benchmarks/bench_ranges.py --runs 400 --out benchmarks/results/ranges.md
 """
 
 from __future__ import annotations
@@ -31,12 +32,12 @@ from sarlink.engine import Prepared
 from sarlink.execution import sweep_all
 from sarlink.simulation import plugins_in_code
 
-ROUNDS = 3
+ROUNDS = 5
 RANGES = [250.0, 500.0, 750.0, 1000.0, 1250.0, 1500.0, 2000.0, 3000.0]
 
 
 def experiment(rcs: list[float], runs: int, drones: int) -> Experiment:
-    return Experiment.from_dict({"name": "ranges", "seed": 7, "runs": runs, "chunk": 50,
+    return Experiment.from_dict({"name": "ranges", "seed": 7, "runs": runs,
                                  "mission": {"team": {"planner": "covb", "drones": drones}},
                                  "grid": {"rc": rcs}})
 
@@ -92,15 +93,10 @@ def split_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> dict[
 
 
 def engine_ms(drones: int, runs: int) -> list[float]:
-    """CPU ms per run: a flight, a traced flight alone, read at one range, at 8 ranges, and
-    at 8 ranges with the staircase (the best of three rounds, interleaved)."""
+    """CPU ms per run: a flight, read at one range, at 8 ranges, and at 8 ranges with the
+    staircase (the best of three rounds, interleaved)."""
     prepared = prepare(Mission.build(planner="covb", drones=drones, rc=1000.0))
-
-    def traced(k: int) -> None:
-        streams, scenario = prepared._start(0, k, None)
-        prepared.record(streams, scenario, traced_at=RANGES[0])
-
-    works = [lambda k: prepared.run(0, k), traced,
+    works = [lambda k: prepared.run(0, k),
              lambda k: prepared.run_ranges(0, k, [1000.0]),
              lambda k: prepared.run_ranges(0, k, RANGES),
              lambda k: prepared.run_ranges(0, k, RANGES, staircase=True)]
@@ -115,69 +111,73 @@ def engine_ms(drones: int, runs: int) -> list[float]:
     return best
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--runs", type=int, default=200)
-    parser.add_argument("--drones", type=int, default=10)
-    parser.add_argument("--out", type=Path, default=Path("benchmarks/results/ranges.md"))
-    args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        root = Path(tmp)
-        for rcs in ([1000.0], RANGES):  # compile or load the kernel and the reading
-            timed_sweep(rcs, 2, args.drones, root / f"warm{len(rcs)}")
-        ones, eights = [], []
-        for i in range(ROUNDS):  # the host's speed drifts: interleaved, the best of each
-            ones.append(timed_sweep([1000.0], args.runs, args.drones, root / f"one{i}")[0])
-            eight, together = timed_sweep(RANGES, args.runs, args.drones, root / f"eight{i}")
-            eights.append(eight)
-        one, eight = min(ones), min(eights)
-        apart = pd.concat([timed_sweep([rc], args.runs, args.drones, root / f"{rc:g}")[1]
-                           for rc in RANGES])
-        parts = {n: split_sweep(rcs, args.runs, args.drones, root / f"split{n}")
-                 for n, rcs in ((1, [1000.0]), (len(RANGES), RANGES))}
+def compare(runs: int, drones: int, root: Path) -> dict[str, Any]:
+    """The two sweeps' CPU (every round), whether the rows agree, and the engine's times."""
+    for rcs in ([1000.0], RANGES):  # compile or load the kernel and the reading
+        timed_sweep(rcs, 2, drones, root / f"warm{drones}-{len(rcs)}")
+    ones, eights = [], []
+    for i in range(ROUNDS):  # the host's speed drifts: interleaved, the best of each
+        ones.append(timed_sweep([1000.0], runs, drones, root / f"one{drones}-{i}")[0])
+        eight, together = timed_sweep(RANGES, runs, drones, root / f"eight{drones}-{i}")
+        eights.append(eight)
+    apart = pd.concat([timed_sweep([rc], runs, drones, root / f"{drones}-{rc:g}")[1]
+                       for rc in RANGES])
     key = ["rc", "run"]
     equal = together.drop(columns="point").sort_values(key).reset_index(drop=True).equals(
         apart.drop(columns="point").sort_values(key).reset_index(drop=True))
-    flight, traced, read1, read8, stairs8 = engine_ms(args.drones, min(args.runs, 50))
+    return {"ones": ones, "eights": eights, "equal": equal,
+            "engine": engine_ms(drones, min(runs, 50))}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=400)
+    parser.add_argument("--drones", type=int, nargs="+", default=[4, 10, 22])
+    parser.add_argument("--out", type=Path, default=Path("benchmarks/results/ranges.md"))
+    args = parser.parse_args()
+    chunk = experiment([1000.0], args.runs, 1).chunk
+    with tempfile.TemporaryDirectory() as tmp:
+        root = Path(tmp)
+        found = {n: compare(args.runs, n, root) for n in args.drones}
+        middle = args.drones[len(args.drones) // 2]
+        parts = {n: split_sweep(rcs, args.runs, middle, root / f"split{n}")
+                 for n, rcs in ((1, [1000.0]), (len(RANGES), RANGES))}
     lines = [
         "# One flight, every range: CPU of a sweep over 8 ranges against one",
         "",
-        f"`python benchmarks/bench_ranges.py --runs {args.runs} --drones {args.drones}`, "
-        f"{datetime.date.today()}, {platform.processor() or platform.machine()}, "
-        "the sweeps' jobs run in the benchmark's process: CPU time of the whole sweep "
-        "(flights, tables, files), without a worker's start-up; the best of "
-        f"{ROUNDS} rounds, the two sweeps interleaved (all rounds, s: one range "
-        f"{' '.join(f'{t:.2f}' for t in ones)}; 8 ranges {' '.join(f'{t:.2f}' for t in eights)}).",
+        f"`python benchmarks/bench_ranges.py --runs {args.runs} --drones "
+        f"{' '.join(map(str, args.drones))}`, {datetime.date.today()}, "
+        f"{platform.processor() or platform.machine()}, the sweeps' jobs run in the "
+        "benchmark's process: CPU time of the whole sweep (flights, tables, files), without "
+        f"a worker's start-up; the best of {ROUNDS} rounds, the two sweeps interleaved.",
         "",
-        f"CovB, N = {args.drones}, {args.runs} runs per point of 4000 s, chunks of 50 runs.",
+        f"CovB, {args.runs} runs per point of 4000 s, chunks of {chunk} runs (the default); "
+        f"8 ranges: {', '.join(f'{r:g}' for r in RANGES)} m; one range: 1000 m.",
         "",
-        "| sweep | CPU s | per run and range, ms |",
-        "|---|---|---|",
-        f"| rc = 1000 m | {one:.2f} | {1e3 * one / args.runs:.2f} |",
-        f"| rc over {len(RANGES)} values ({', '.join(f'{r:g}' for r in RANGES)} m) | "
-        f"{eight:.2f} | {1e3 * eight / args.runs / len(RANGES):.2f} |",
+        "| N | one range, CPU s | 8 ranges, CPU s | ratio | rows equal to 8 one-range "
+        "sweeps | all rounds, one range / 8 ranges (s) |",
+        "|---|---|---|---|---|---|",
+        *(f"| {n} | {min(f['ones']):.2f} | {min(f['eights']):.2f} | "
+          f"**{min(f['eights']) / min(f['ones']):.2f}×** | {f['equal']} | "
+          f"{' '.join(f'{t:.2f}' for t in f['ones'])} / "
+          f"{' '.join(f'{t:.2f}' for t in f['eights'])} |" for n, f in found.items()),
         "",
-        f"Ratio of the 8-range sweep to the one-range sweep: **{eight / one:.2f}×**.",
-        f"Rows of the 8-range sweep equal those of 8 one-range sweeps: **{equal}**.",
-        "",
-        "Where the CPU of each sweep goes (one more sweep of each, its parts timed), ms per "
-        "run:",
+        f"Where the CPU of each sweep goes (N = {middle}, one more sweep of each, its parts "
+        "timed), ms per run:",
         "",
         "| part | one range | 8 ranges |",
         "|---|---|---|",
         *(f"| {part} | {1e3 * parts[1][part] / args.runs:.2f} | "
           f"{1e3 * parts[len(RANGES)][part] / args.runs:.2f} |" for part in parts[1]),
         "",
-        "The engine alone, CPU ms per run (mean of "
-        f"{min(args.runs, 50)} runs, N = {args.drones}, the best of three rounds):",
+        f"The engine alone, CPU ms per run (mean of {min(args.runs, 50)} runs, the best of "
+        "three rounds):",
         "",
-        "| work | ms per run |",
-        "|---|---|",
-        f"| plain flight (`Prepared.run`, what a one-range sweep flies) | {flight:.2f} |",
-        f"| traced flight alone (positions only, `Params.trace`) | {traced:.2f} |",
-        f"| traced flight read at one range (`Prepared.run_ranges`) | {read1:.2f} |",
-        f"| traced flight read at 8 ranges (`Prepared.run_ranges`) | {read8:.2f} |",
-        f"| traced flight read at 8 ranges with the staircase | {stairs8:.2f} |",
+        "| N | plain flight (`Prepared.run`) | read at 1 range (`Prepared.run_ranges`) | "
+        "read at 8 ranges | traced, read at 8 ranges with the staircase |",
+        "|---|---|---|---|---|",
+        *(f"| {n} | {' | '.join(f'{t:.2f}' for t in f['engine'])} |"
+          for n, f in found.items()),
         "",
     ]
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -376,8 +376,9 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
     return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds, np.empty(mp),
                    np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
-                   np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified, reach_cum, conn_cum, acc_reach,
-                   acc_conn, going, np.zeros(nr), np.zeros(nr))
+                   np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified,
+                   reach_cum, conn_cum, acc_reach, acc_conn, going, np.zeros(nr),
+                   np.zeros(nr))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -431,8 +432,9 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
               sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading) -> None:
     """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
-    first of them), the graph (the kernel's link pass at every range), the BS's component, reachability and the knowledge's flood (the kernel's own
-    functions, :mod:`sarlink.engine.graph`), the notification and the step's records.
+    first of them), the graph (the kernel's link pass at every range), the BS's component,
+    reachability and the knowledge's flood (the kernel's own functions,
+    :mod:`sarlink.engine.graph`), the notification and the step's records.
 
     A range's component and reachability are found again only when its graph changed, and
     its knowledge flooded again only when its graph or the knowers changed and its BS is not
