@@ -55,9 +55,12 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
             f"if hasattr(_{alias}, 'py_func') else _{alias})"]
 
 
-def plugin_block(rule: DistributedRule | None, radio: RadioModel) -> str:
+def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
+                 reads_ranges: bool = True) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only) and
-    ``radio``."""
+    ``radio``. The reading at several ranges (:mod:`sarlink.engine.ranges`, inlined: most
+    of a kernel's compile time after the rule) is compiled only into a kernel whose team may
+    fly the same at every range, and if ``reads_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}
     defaults: dict[str, Callable[..., Any]] = {
         "rule_prepare": none.prepare, "rule_due": none.due, "rule_decide": none.decide}
@@ -69,8 +72,10 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel) -> str:
     if isinstance(radio.static, bool):
         lines += ["", "", "@njit(inline='always')", "def radio_static(p, rp):",
                   f"    return {radio.static}", ""]
+    range_free = radio.range_free and (rule is None or rule.range_free)
     lines += [f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
+              f"READS_RANGES = {reads_ranges and range_free}",
               "# ---- end of plug-ins ----", ""]
     return "\n".join(lines)
 
@@ -96,8 +101,8 @@ def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: boo
                   stepping: bool = False) -> str:
     """The text of the kernel module for ``rule`` and ``radio`` (its stepping form if
     ``stepping``)."""
-    text = _BLOCK.sub(lambda _: plugin_block(rule, radio), Path(template.__file__).read_text(),
-                      count=1)
+    block = plugin_block(rule, radio, reads_ranges=not stepping)  # an environment never reads
+    text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)
     return text if cache else text.replace("cache=True", "cache=False")

@@ -65,6 +65,13 @@ class RunRecord(NamedTuple):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def no_ranges(cp_steps: np.ndarray) -> AtRanges:
+    """The records at no range: a run not read at several ranges."""
+    return AtRanges(np.full(0, -1, dtype=np.int64), np.empty((0, cp_steps.shape[0])),
+                    np.empty((0, cp_steps.shape[0])))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def new_track(steps: int, n: int, nw: int, position_steps: int = 0) -> Track:
     """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row), and
     for the positions of ``position_steps`` steps if more (a traced run)."""
