@@ -12,7 +12,7 @@ planner, a rule declared ``range_free`` such as CovB, drones that do not report:
 with the same runs are one job, which flies each run once and reads it at every range
 (:mod:`sarlink.engine.ranges`), with the same rows as one flight per range. A job of one
 range flies as before, unless the experiment asks for the notification staircase
-(``Experiment.staircase``): reading the critical ranges costs about two thirds of a flight,
+(``Experiment.staircase``): a flight read at several ranges costs more than a plain one,
 which only a job of several ranges earns back.
 """
 

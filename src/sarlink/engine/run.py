@@ -141,8 +141,15 @@ class Prepared:
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                traced_at: float | None = None, read_at: Sequence[float] = ()) -> RunRecord:
-        """The kernel's record of one run from its random streams and initial conditions."""
+        """The kernel's record of one run from its random streams and initial conditions.
+
+        A team with no distributed drone (mTSP-ConB with ``N_m <= N_r``) is read at several
+        ranges by the kernel of routes: its rule never acts (:attr:`range_free`), and only
+        the kernels of range-free teams carry the reading (``READS_RANGES``, engine.build).
+        """
         kernel = self.kernel
+        if read_at and not self.distributed.any():
+            kernel = kernel_for(None, get_radio(self.mission.radio))
         args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at,
                               read_at=read_at)
         if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
