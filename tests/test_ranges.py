@@ -199,14 +199,14 @@ def test_a_sweep_over_rc_equals_a_sweep_per_range(planner: str, staircase: bool,
     assert (varied.max(axis=1) > 1).all()  # each run's outcome depends on the range
 
 
-def _tasks(folder: Path, planners: list[str]) -> list:
+def _tasks(folder: Path, planners: list[str], staircase: bool = False) -> list:
     """The tasks of 8 runs, in chunks of 4, of 4 drones of each planner at two ranges."""
     experiment = Experiment.from_dict({
-        "name": "tasks", "seed": 1, "runs": 8, "chunk": 4,
+        "name": "tasks", "seed": 1, "runs": 8, "chunk": 4, "staircase": staircase,
         "mission": {"team": {"drones": 4}},
         "grid": {"planner": planners, "rc": [500.0, 1000.0]}})
     with storage.open_store(folder, experiment) as store:
-        return execution._plan(store, experiment.runs, experiment.chunk)
+        return execution._plan(store, experiment.runs, experiment.chunk, staircase)
 
 
 def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
@@ -226,12 +226,13 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
 
 def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
-    tasks = _tasks(tmp_path, ["conb", "mtsp", "covb"])
-    assert execution._parts(execution._jobs(tasks)) == [
-        ("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
-        ("kernel", "covb", "disc"), ("ranges", "mtsp", "disc")]
-    one = [t for t in tasks if t.point.params["rc"] == 500.0]
-    assert ("ranges", "mtsp", "disc") not in execution._parts(execution._jobs(one))
+    """The kernels read at several ranges themselves; the staircase is a part of its own."""
+    parts = [("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
+             ("kernel", "covb", "disc")]
+    tasks = _tasks(tmp_path / "plain", ["conb", "mtsp", "covb"])
+    assert execution._parts(execution._jobs(tasks)) == parts
+    stairs = _tasks(tmp_path / "stairs", ["conb", "mtsp", "covb"], staircase=True)
+    assert execution._parts(execution._jobs(stairs)) == [*parts, ("ranges", "conb", "disc")]
 
 
 def test_warming_up_the_reading_compiles_it() -> None:

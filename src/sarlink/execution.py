@@ -181,11 +181,12 @@ _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 
 def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
     """Compile one Numba part in this worker, or load it from Numba's cache: the kernel of a
-    planner's rule and a radio model (``("kernel", planner, radio)``), the reading of one
-    flight at every range (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
+    planner's rule and a radio model (``("kernel", planner, radio)``; those of range-free
+    teams read a flight at several ranges as it flies), the reading of a flight's
+    notification staircase (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
 
     On a fresh machine every worker would otherwise compile each part at its first task
-    (the kernels 10-35 s of CPU each, the reading 18 s, the GA 13 s); compiled once, the
+    (the kernels 10-50 s of CPU each, the staircase 14 s, the GA 13 s); compiled once, the
     parts spread over the workers, the others then load them from the cache.
     """
     adopt_plugins(plugins)
@@ -200,8 +201,8 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
-    (one per rule and radio model), and the reading at every range if a job flies once for
-    several ranges (after the kernels, whose first compile also compiles what they share)."""
+    (one per rule and radio model), and the reading of the staircase if a job asks for it
+    (after the kernels, whose first compile also compiles what they share)."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()
     kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
     for m in missions:
@@ -209,7 +210,7 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
         kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
                            ("kernel", m.team.planner, m.radio))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
-    shared = next((job[0].point.mission for job in jobs if len(job) > 1), None)
+    shared = next((job[0].point.mission for job in jobs if job[0].staircase), None)
     order = list(kernels.values())
     return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
             *([("ranges", shared.team.planner, shared.radio)] if shared else [])]
