@@ -89,7 +89,14 @@ class RunResult:
     def row(self) -> dict[str, Any]:
         """A flat record for tables (the row of :func:`result_columns`): missing event times
         are NaN; a staircase as two more columns."""
-        return {name: column[0].tolist() for name, column in result_columns([self]).items()}
+        return {name: _plain(column[0]) for name, column in result_columns([self]).items()}
+
+
+def _plain(value: np.ndarray | np.generic) -> Any:
+    """A cell as Python: a missing time as ``math.nan`` itself, so that equal rows compare
+    equal (``==`` on dicts takes an object for equal to itself, never one NaN for another)."""
+    cell = value.tolist()
+    return math.nan if isinstance(cell, float) and math.isnan(cell) else cell
 
 
 def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
