@@ -107,9 +107,9 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
     def times(values: list[float | None]) -> np.ndarray:
         return np.array([math.nan if v is None else v for v in values], dtype=float)
 
+    checkpoints = np.stack([r.checkpoints for r in results])
     reach = np.stack([r.reach_cum for r in results])
     connected = np.stack([r.connected_cum for r in results])
-    horizons = np.array([r.horizon for r in results])
     columns: dict[str, Any] = {
         "seed": np.array([r.seed for r in results], dtype=np.int64),
         "run": np.array([r.run for r in results], dtype=np.int64),
@@ -123,8 +123,8 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
         # RunResult.t_reachable() and .connected_fraction() at the horizon, the last
         # checkpoint, where the interpolation gives the last record exactly
         "t_reachable": reach[:, -1].copy(),
-        "connected_fraction": connected[:, -1] / horizons,
-        "checkpoints": np.stack([r.checkpoints for r in results]),
+        "connected_fraction": connected[:, -1] / checkpoints[:, -1],
+        "checkpoints": checkpoints,
         "reach_cum": reach,
         "connected_cum": connected,
     }

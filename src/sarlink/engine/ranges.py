@@ -226,12 +226,18 @@ def _observe(k: int, last: int, positions: np.ndarray, px: np.ndarray, py: np.nd
 
 
 @njit(cache=True, error_model="numpy")
-def _staircase(p: Params, unit: Params, target_x: float, target_y: float,
-               positions: np.ndarray, end: int, rng_shadow: np.random.Generator,
-               rng_look: np.random.Generator, cp_steps: np.ndarray,
-               r2s: np.ndarray) -> Critical:
-    """:func:`critical` with the staircase: every step's minimum spanning tree and knowledge
-    keys."""
+def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
+             end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
+             cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
+    """The critical ranges of steps ``0 .. end`` of a range-free flight (its notification
+    staircase, from every step's minimum spanning tree), and its records at every squared
+    range of ``r2s``, summed step by step in the kernel's order.
+
+    ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them
+    (``Params.trace``); a team that settled has fewer rows, and its last holds for the later
+    steps. ``rng_shadow`` and ``rng_look`` are fresh copies of the run's streams; ``unit`` is
+    ``p`` with ``r_c = 1``, with which the log-normal radio's ``update`` draws the bare fades.
+    """
     n = positions.shape[1]
     last = positions.shape[0] - 1
     px, py, pz, fade = _nodes(p, unit, n, target_x, target_y)
@@ -436,10 +442,9 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     reachability and the knowledge's flood (the kernel's own functions,
     :mod:`sarlink.engine.graph`), the notification and the step's records.
 
-    A range's component and reachability are found again only when its graph changed, and
-    its knowledge flooded again only when its graph or the knowers changed and its BS is not
-    notified yet (only its component if a change may have moved it, :func:`_band_links`).
-    ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
+    A range's component and reachability are found again only where a change of its graph
+    may have moved them (:func:`_band_links`), and its knowledge flooded again only when its
+    graph or the knowers changed and its BS is not notified yet. ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
     and ``sensed`` the drones that sensed the target (a range-free flight floods nothing).
     """
     n = sensed.shape[0]
@@ -494,20 +499,3 @@ def read_records(rd: Reading) -> records.AtRanges:
     back = np.empty_like(rd.rank)
     back[rd.rank] = np.arange(rd.rank.shape[0])
     return records.AtRanges(rd.notified[back], rd.reach_cum[back], rd.conn_cum[back])
-
-
-@njit(cache=True, error_model="numpy")
-def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
-             end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-             cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
-    """The critical ranges of steps ``0 .. end`` of a range-free flight (its notification
-    staircase, from every step's minimum spanning tree), and its records at every squared
-    range of ``r2s``, summed step by step in the kernel's order.
-
-    ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them
-    (``Params.trace``); a team that settled has fewer rows, and its last holds for the later
-    steps. ``rng_shadow`` and ``rng_look`` are fresh copies of the run's streams; ``unit`` is
-    ``p`` with ``r_c = 1``, with which the log-normal radio's ``update`` draws the bare fades.
-    """
-    return _staircase(p, unit, target_x, target_y, positions, end, rng_shadow, rng_look,
-                      cp_steps, r2s)
