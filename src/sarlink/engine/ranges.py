@@ -444,8 +444,9 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
 
     A range's component and reachability are found again only where a change of its graph
     may have moved them (:func:`_band_links`), and its knowledge flooded again only when its
-    graph or the knowers changed and its BS is not notified yet. ``fade`` are the radio's bare fades (the kernel's thresholds at ``r_c = 1``)
-    and ``sensed`` the drones that sensed the target (a range-free flight floods nothing).
+    graph or the knowers changed and its BS is not notified yet. ``fade`` are the radio's bare
+    fades (the kernel's thresholds at ``r_c = 1``) and ``sensed`` the drones that sensed the
+    target (a range-free flight floods nothing).
     """
     n = sensed.shape[0]
     _open_step(k, cp_steps, ci, rd.going, rd.reach_cum, rd.conn_cum, rd.acc_reach,
