@@ -134,12 +134,12 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
-        if push or not reading:  # a reading needs only the pairs within r of the flight
+        if not reading:  # a reading has a link pass of its own, at every range
             graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         reachable, connected = False, 0
         if READS_RANGES and reading:  # compiled only where the team may be range-free (build)
             ranges.read_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0, knows, spread,
-                             stack, rd)
+                             stack, rd, near, push)
         if not (reading or p.trace):  # a traced flight is read afterwards (engine.ranges)
             graph.bs_component(adj, n, routed, stack)
             if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:

@@ -56,6 +56,8 @@ from sarlink.engine.radios import lognormal
 _DIRECT = int(Reachability.DIRECT)
 
 _INF = math.inf
+_ZERO = np.uint64(0)
+_ONE = np.uint64(1)
 
 
 class Critical(NamedTuple):
@@ -331,8 +333,6 @@ class Reading(NamedTuple):
     bounds: np.ndarray
     """``(2, m, mp)``: the keys between which a link stays in its band, ``(lo, hi]``; never
     crossed off the links (``a >= b``, the padding)."""
-    key: np.ndarray
-    """One row of squared distances (work space)."""
     adj: np.ndarray
     """``(ranges, m, words)``: the graph at each range."""
     routed: np.ndarray
@@ -379,7 +379,7 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
         bounds[0, a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
     nw = (m + 63) // 64
     notified, reach_cum, conn_cum, acc_reach, acc_conn, going, _, _ = _records(nr, checkpoints)
-    return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds, np.empty(mp),
+    return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds,
                    np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
                    np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified,
@@ -388,55 +388,97 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
+    """Link ``a < b``, of key ``v``, into its band: toggled in the graphs of the ranges
+    between its old band and its new one, whose BS component may then have moved."""
+    m = rd.band.shape[0]
+    thr = rd.thr
+    nr = thr.shape[0]
+    now = np.searchsorted(thr, v)  # the ranges below the key
+    was = rd.band[a, b]
+    for j in range(min(now, was), max(now, was)):
+        _toggle(rd.adj[j], a, b)
+        rd.changed[j] = True
+        if not rd.moved[j]:  # the component as of the step before, still right
+            joined = graph.has(rd.routed[j], a), graph.has(rd.routed[j], b)
+            rd.moved[j] = b == m - 1 or (joined[0] != joined[1] if now < was
+                                         else joined[0] and joined[1])
+    rd.band[a, b] = now
+    rd.bounds[0, a, b] = thr[now - 1] if now > 0 else -_INF
+    rd.bounds[1, a, b] = thr[now] if now < nr else _INF
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray,
-                shadowed: bool, rd: Reading) -> None:
-    """Bring the graph at every range up to date with this step's positions and fades.
+                shadowed: bool, rd: Reading, near: np.ndarray, r2: float,
+                with_near: bool) -> None:
+    """Bring the graph at every range up to date with this step's positions and fades and,
+    if ``with_near``, the pairs within squared sensing range ``r2`` (``near``, as
+    :func:`sarlink.engine.graph.links` gives them: the flight has no link pass of its own).
 
     Every link sits in a *band*, the number of ranges below its key: it exists at the ranges
-    from its band on. Every key is computed as the kernel's link pass computes ``d²`` (whole
-    padded rows, in vectors) and compared with its band's bounds; only a link that left its
-    band changes a graph, and only at the ranges between its old and new band. The BS's
-    component changes only where a new link joins it to a node outside or a lost link
-    joined two nodes in it; reachability also where the target's links change.
+    from its band on. Every ``d²`` is computed as the link pass computes it (whole padded
+    rows, word by word, in vectors) and compared with its band's bounds, giving the bitset of
+    the row's links that left their band (the bounds of ``a >= b`` and of the padding are
+    never crossed); only those change a graph, and only at the ranges between the old and new
+    band. Under shadowing every link's key moves with its fade, so every link is looked at.
     """
     m = rd.band.shape[0]
     mp = px.shape[0]
-    key, lo, hi, thr = rd.key, rd.bounds[0], rd.bounds[1], rd.thr
-    nr = thr.shape[0]
+    lo, hi = rd.bounds[0], rd.bounds[1]
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
         out = False
-        for b in range(mp):  # the row as graph.links computes it
-            dx = xa - px[b]
-            dy = ya - py[b]
-            dz = za - pz[b]
-            v = dx * dx + dy * dy + dz * dz
-            key[b] = v
-            out |= (v <= lo[a, b]) | (v > hi[a, b])
-        if not (out or shadowed):
+        for w in range(rd.adj.shape[2]):
+            first = w * 64
+            close = np.uint64(0)
+            for b in range(first, min(mp, first + 64)):
+                dx = xa - px[b]
+                dy = ya - py[b]
+                dz = za - pz[b]
+                dd = dx * dx + dy * dy + dz * dz
+                out |= (dd <= lo[a, b]) | (dd > hi[a, b])
+                if with_near:
+                    close |= (_ONE if dd <= r2 else _ZERO) << np.uint64(b - first)
+            if with_near:
+                if w == a >> 6:  # a node is not its own neighbour
+                    close &= ~(_ONE << np.uint64(a & 63))
+                near[a, w] = close
+        if shadowed:  # every link's key moves with its fade
+            for b in range(a + 1, m):
+                dx = xa - px[b]
+                dy = ya - py[b]
+                dz = za - pz[b]
+                v = _effective(dx * dx + dy * dy + dz * dz, fade[a, b])
+                if not lo[a, b] < v <= hi[a, b]:
+                    _band_link(a, b, v, rd)
             continue
-        for b in range(a + 1, m):
-            v = _effective(key[b], fade[a, b]) if shadowed else key[b]
-            if lo[a, b] < v <= hi[a, b]:
-                continue
-            now = np.searchsorted(thr, v)  # the ranges below the key
-            was = rd.band[a, b]
-            for j in range(min(now, was), max(now, was)):
-                _toggle(rd.adj[j], a, b)
-                rd.changed[j] = True
-                if not rd.moved[j]:  # the component as of the step before, still right
-                    joined = graph.has(rd.routed[j], a), graph.has(rd.routed[j], b)
-                    rd.moved[j] = b == m - 1 or (joined[0] != joined[1] if now < was
-                                                 else joined[0] and joined[1])
-            rd.band[a, b] = now
-            lo[a, b] = thr[now - 1] if now > 0 else -_INF
-            hi[a, b] = thr[now] if now < nr else _INF
+        if not out:
+            continue
+        for w in range(rd.adj.shape[2]):  # the links that left their band, as a bitset
+            first = w * 64
+            left = np.uint64(0)
+            for b in range(first, min(mp, first + 64)):
+                dx = xa - px[b]
+                dy = ya - py[b]
+                dz = za - pz[b]
+                dd = dx * dx + dy * dy + dz * dz
+                left |= (_ONE if (dd <= lo[a, b]) | (dd > hi[a, b]) else _ZERO) << np.uint64(
+                    b - first)
+            while left:
+                b = first + graph.lowest(left)
+                left &= left - _ONE
+                dx = xa - px[b]
+                dy = ya - py[b]
+                dz = za - pz[b]
+                _band_link(a, b, dx * dx + dy * dy + dz * dz, rd)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
-              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading) -> None:
+              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading,
+              near: np.ndarray, with_near: bool) -> None:
     """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
     first of them), the graph (the kernel's link pass at every range), the BS's component,
     reachability and the knowledge's flood (the kernel's own functions,
@@ -455,7 +497,7 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     for i in range(n):
         new_knower |= sensed[i] and not rd.counted[i]
         rd.counted[i] = sensed[i]
-    _band_links(px, py, pz, fade, p.sigma > 0.0, rd)
+    _band_links(px, py, pz, fade, p.sigma > 0.0, rd, near, p.r * p.r, with_near)
     notified_now = False
     for j in range(rd.thr.shape[0]):
         if rd.moved[j]:
