@@ -32,7 +32,7 @@ from sarlink.engine import Prepared
 from sarlink.execution import sweep_all
 from sarlink.simulation import plugins_in_code
 
-ROUNDS = 5
+ROUNDS = 15
 RANGES = [250.0, 500.0, 750.0, 1000.0, 1250.0, 1500.0, 2000.0, 3000.0]
 
 

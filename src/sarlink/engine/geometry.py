@@ -25,6 +25,16 @@ def unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def d2(xa: float, ya: float, za: float, xb: float, yb: float, zb: float) -> float:
+    """The squared distance from node a to node b, in the link pass's arithmetic
+    (:func:`sarlink.engine.graph.links`), whose bits every reading of a link must match."""
+    dx = xa - xb
+    dy = ya - yb
+    dz = za - zb
+    return dx * dx + dy * dy + dz * dz
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def inside(x: float, y: float, size: float) -> bool:
     """Whether ``(x, y)`` lies in the square area ``[0, size]²``."""
     return 0.0 <= x <= size and 0.0 <= y <= size

@@ -12,6 +12,7 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine.codes import Reachability
+from sarlink.engine.geometry import d2
 
 _DIRECT = int(Reachability.DIRECT)
 _ZERO = np.uint64(0)
@@ -94,10 +95,7 @@ def links(
             row = np.uint64(0)
             close = np.uint64(0)
             for b in range(lo, min(mp, lo + 64)):
-                dx = xa - px[b]
-                dy = ya - py[b]
-                dz = za - pz[b]
-                dd = dx * dx + dy * dy + dz * dz
+                dd = d2(xa, ya, za, px[b], py[b], pz[b])
                 shift = np.uint64(b - lo)
                 row |= (_ONE if dd <= thr2[a, b] else _ZERO) << shift
                 if with_near:

@@ -49,7 +49,7 @@ from numba import njit
 
 from sarlink.engine import graph, records, sensing
 from sarlink.engine.codes import Reachability
-from sarlink.engine.geometry import FAR, PAD
+from sarlink.engine.geometry import FAR, PAD, d2
 from sarlink.engine.params import STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.radios import lognormal
 
@@ -106,10 +106,7 @@ def _keys(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray, shad
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
         for b in range(a + 1, m):
-            dx = xa - px[b]
-            dy = ya - py[b]
-            dz = za - pz[b]
-            v = dx * dx + dy * dy + dz * dz
+            v = d2(xa, ya, za, px[b], py[b], pz[b])
             if shadowed:
                 v = _effective(v, fade[a, b])
             key[a, b] = v
@@ -434,10 +431,7 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
             first = w * 64
             close = np.uint64(0)
             for b in range(first, min(mp, first + 64)):
-                dx = xa - px[b]
-                dy = ya - py[b]
-                dz = za - pz[b]
-                dd = dx * dx + dy * dy + dz * dz
+                dd = d2(xa, ya, za, px[b], py[b], pz[b])
                 out |= (dd <= lo[a, b]) | (dd > hi[a, b])
                 if with_near:
                     close |= (_ONE if dd <= r2 else _ZERO) << np.uint64(b - first)
@@ -447,10 +441,7 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
                 near[a, w] = close
         if shadowed:  # every link's key moves with its fade
             for b in range(a + 1, m):
-                dx = xa - px[b]
-                dy = ya - py[b]
-                dz = za - pz[b]
-                v = _effective(dx * dx + dy * dy + dz * dz, fade[a, b])
+                v = _effective(d2(xa, ya, za, px[b], py[b], pz[b]), fade[a, b])
                 if not lo[a, b] < v <= hi[a, b]:
                     _band_link(a, b, v, rd)
             continue
@@ -460,19 +451,13 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
             first = w * 64
             left = np.uint64(0)
             for b in range(first, min(mp, first + 64)):
-                dx = xa - px[b]
-                dy = ya - py[b]
-                dz = za - pz[b]
-                dd = dx * dx + dy * dy + dz * dz
+                dd = d2(xa, ya, za, px[b], py[b], pz[b])
                 left |= (_ONE if (dd <= lo[a, b]) | (dd > hi[a, b]) else _ZERO) << np.uint64(
                     b - first)
             while left:
                 b = first + graph.lowest(left)
                 left &= left - _ONE
-                dx = xa - px[b]
-                dy = ya - py[b]
-                dz = za - pz[b]
-                _band_link(a, b, dx * dx + dy * dy + dz * dz, rd)
+                _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), rd)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -18,7 +18,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from sarlink.engine.geometry import FAR, TINY, unit
+from sarlink.engine.geometry import FAR, TINY, d2, unit
 from sarlink.engine.graph import add, bit, covers, drop, first_nodes, lowest
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -125,11 +125,8 @@ def predict_routes(
             lo = v * 64
             row = np.uint64(0)
             for b in range(lo, min(mp, lo + 64)):
-                dx = xa - qx[b]
-                dy = ya - qy[b]
-                dz = za - pz[b]
-                row |= (_ONE if dx * dx + dy * dy + dz * dz <= disc2[a, b] else _ZERO) << (
-                    np.uint64(b - lo))
+                row |= (_ONE if d2(xa, ya, za, qx[b], qy[b], pz[b]) <= disc2[a, b]
+                        else _ZERO) << np.uint64(b - lo)
             out[v] |= row
         w = 0  # the new nodes may lie in any word
     drop(out, n + 1)
