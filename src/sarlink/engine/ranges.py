@@ -466,7 +466,8 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading,
               near: np.ndarray, with_near: bool) -> None:
     """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
-    first of them), the graph (the kernel's link pass at every range), the BS's component,
+    first of them), the graph (the kernel's link pass at every range, which also gives the
+    pairs within ``r`` in ``near`` when a rule reads them, ``with_near``), the BS's component,
     reachability and the knowledge's flood (the kernel's own functions,
     :mod:`sarlink.engine.graph`), the notification and the step's records.
 
