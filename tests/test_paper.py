@@ -23,9 +23,10 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError
 from sarlink.cli import app
-from sarlink.config import READINGS, Mission
+from sarlink.config import READINGS, Experiment, Mission
 from sarlink.engine.rules import COVB
 from sarlink.engine.streams import plan_seed
+from sarlink.execution import sweep_all
 from sarlink.metrics import MEASURES, run_values, summarize, wilson
 from sarlink.paper import ReproductionResult, check_all, load_runs, reproduce, tally
 from sarlink.paper import findings as claims
@@ -393,6 +394,32 @@ def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the
     assert {(line.get_color(), line.get_marker()) for line in drawn} == {("#123456", "h")}
     (_, values), = FIGURES[3].values(table)
     assert (values["planner"] == "MadeUp").sum() == len(DRONES) * len(RANGES)
+
+
+@pytest.mark.parametrize("name", ["report", "others"])
+def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose_nothing(
+        name: str, tmp_path: Path) -> None:
+    """Figs. 8 and 9 read only measures settled at notification from these sweeps: their
+    tables from runs stopped there equal those from runs flown to the horizon, but for the
+    reachability and connected fraction, which runs stopped before ``t_d`` do not have (NaN:
+    never a wrong value)."""
+    exp = EXPERIMENTS[name]
+    built = exp.build(6)
+    assert built.mission.timing.stop == "notified"
+    grid = {**built.grid, "drones": [4], "rc": [500.0]}
+    tables = [exp.tables(runs) for runs in sweep_all(
+        [(Experiment(name=name, seed=built.seed, runs=6,
+                     mission=built.mission.replace(stop=stop), grid=grid), tmp_path / stop)
+         for stop in ("notified", "horizon")], workers=1, progress=False)]
+    lost = [c for c in tables[0][name] if c.startswith(("reachability", "connected"))]
+    kept = tables[0][name][lost].notna()
+    assert lost and not kept.all().all() and tables[1][name][lost].notna().all().all()
+    pd.testing.assert_frame_equal(tables[0][name][lost][kept], tables[1][name][lost][kept])
+    for table in tables[0]:
+        pd.testing.assert_frame_equal(tables[0][table].drop(columns=lost, errors="ignore"),
+                                      tables[1][table].drop(columns=lost, errors="ignore"))
+    stopped = tables[0][name]
+    assert (stopped["P_s"] < 1).any() and (stopped["P_s"] > 0).any()  # both kinds of run
 
 
 def test_fig9_draws_the_other_planners_solid_beside_the_paper_planners_dashed() -> None:

@@ -192,6 +192,9 @@ def conb_headings(
     """
     n = hx.shape[0]
     rc2 = rc * rc
+    nw = adj.shape[1]
+    tw = (n + 1) >> 6  # the word of the target's bit
+    nodes = (_ONE << np.uint64((n + 1) & 63)) - _ONE  # its bits below the target's
     for i in range(n):
         if not deciding[i]:
             continue
@@ -200,12 +203,11 @@ def conb_headings(
             if no_term:
                 vx[i] = vy[i] = 0.0
             continue
-        neighbours = False
-        candidates = False
-        for j in range(n + 1):
-            if bit(adj[i, j >> 6], j):
-                neighbours = True
-                candidates |= bit(routed_next[j >> 6], j)
+        neighbours = candidates = False
+        for w in range(nw):  # the drones and the BS (not the target) linked to i
+            linked = adj[i, w] & (~_ZERO if w < tw else nodes)
+            neighbours |= linked != _ZERO
+            candidates |= linked & routed_next[w] != _ZERO
         if not neighbours:
             if p.isolated == ISOLATED_HOME:
                 vx[i], vy[i] = unit(p.bs_x - px[i], p.bs_y - py[i], hx[i], hy[i])
@@ -216,26 +218,30 @@ def conb_headings(
         best_rank = -1.0
         best_d2 = np.inf
         best_tau = best_vx = best_vy = 0.0
-        for j in range(n + 1):
-            if not bit(adj[i, j >> 6], j) or (candidates and not bit(routed_next[j >> 6], j)):
-                continue
-            vjx = vjy = 0.0  # the BS and landed drones stand still
-            if j < n and mode[j] != LANDED:
-                vjx, vjy = p.speed * hx[j], p.speed * hy[j]
-            relx, rely = px[j] - px[i], py[j] - py[i]
-            rvx, rvy = vjx - vix, vjy - viy
-            a = rvx * rvx + rvy * rvy
-            rel2 = relx * relx + rely * rely
-            if a < TINY:  # equal velocities: the contact never ends
-                rank, tau = np.inf, p.flight_time
-            else:
-                b = 2.0 * (relx * rvx + rely * rvy)
-                disc = b * b - 4.0 * a * (rel2 - rc2)
-                tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
-                rank = tau
-            if rank > best_rank or (rank == best_rank and rel2 < best_d2):
-                best, best_rank, best_d2 = j, rank, rel2
-                best_tau, best_vx, best_vy = tau, vjx, vjy
+        for w in range(nw):  # in increasing order of j
+            linked = adj[i, w] & (~_ZERO if w < tw else nodes)
+            if candidates:
+                linked &= routed_next[w]
+            while linked:
+                j = w * 64 + lowest(linked)
+                linked &= linked - _ONE
+                vjx = vjy = 0.0  # the BS and landed drones stand still
+                if j < n and mode[j] != LANDED:
+                    vjx, vjy = p.speed * hx[j], p.speed * hy[j]
+                relx, rely = px[j] - px[i], py[j] - py[i]
+                rvx, rvy = vjx - vix, vjy - viy
+                a = rvx * rvx + rvy * rvy
+                rel2 = relx * relx + rely * rely
+                if a < TINY:  # equal velocities: the contact never ends
+                    rank, tau = np.inf, p.flight_time
+                else:
+                    b = 2.0 * (relx * rvx + rely * rvy)
+                    disc = b * b - 4.0 * a * (rel2 - rc2)
+                    tau = 0.0 if disc < 0.0 else max(0.0, (-b + math.sqrt(disc)) / (2.0 * a))
+                    rank = tau
+                if rank > best_rank or (rank == best_rank and rel2 < best_d2):
+                    best, best_rank, best_d2 = j, rank, rel2
+                    best_tau, best_vx, best_vy = tau, vjx, vjy
         cx, cy = px[best] + best_vx * best_tau, py[best] + best_vy * best_tau
         nx, ny = px[i] + p.speed * p.dt * hx[i], py[i] + p.speed * p.dt * hy[i]
         ux, uy = unit(cx - nx, cy - ny, hx[i], hy[i])
