@@ -226,13 +226,16 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
 
 def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
-    """The kernels read at several ranges themselves; the staircase is a part of its own."""
+    """The kernels read at several ranges themselves; the staircase is a part of its own,
+    compiled only where a team may be read by it."""
     parts = [("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
              ("kernel", "covb", "disc")]
     tasks = _tasks(tmp_path / "plain", ["conb", "mtsp", "covb"])
     assert execution._parts(execution._jobs(tasks)) == parts
     stairs = _tasks(tmp_path / "stairs", ["conb", "mtsp", "covb"], staircase=True)
-    assert execution._parts(execution._jobs(stairs)) == [*parts, ("ranges", "conb", "disc")]
+    assert execution._parts(execution._jobs(stairs)) == [*parts, ("ranges", "mtsp", "disc")]
+    conb = _tasks(tmp_path / "conb", ["conb"], staircase=True)
+    assert execution._parts(execution._jobs(conb)) == [("kernel", "conb", "disc")]
 
 
 def test_warming_up_the_reading_compiles_it() -> None:

@@ -202,7 +202,8 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
     (one per rule and radio model), and the reading of the staircase if a job asks for it
-    (after the kernels, whose first compile also compiles what they share)."""
+    whose team may fly once for every range (after the kernels, whose first compile also
+    compiles what they share; the others' rows have no staircase)."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()
     kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
     for m in missions:
@@ -210,7 +211,8 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
         kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
                            ("kernel", m.team.planner, m.radio))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
-    shared = next((job[0].point.mission for job in jobs if job[0].staircase), None)
+    shared = next((job[0].point.mission for job in jobs
+                   if job[0].staircase and _may_share(job[0].point.mission)), None)
     order = list(kernels.values())
     return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
             *([("ranges", shared.team.planner, shared.radio)] if shared else [])]
