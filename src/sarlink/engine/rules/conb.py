@@ -98,11 +98,12 @@ def predict_routes(
     m = n + 2
     mp = qx.shape[0]
     ahead = p.speed * steps * p.dt
-    for j in range(m):  # every heading, in a loop without the routes' branch
+    for j in range(n):  # every heading, in a loop without branches (it vectorizes)
+        move = 0.0 if mode[j] == LANDED else ahead  # a landed drone's 0 * h adds a zero
+        qx[j] = px[j] + move * hx[j]
+        qy[j] = py[j] + move * hy[j]
+    for j in range(n, m):  # the BS and the target
         qx[j], qy[j] = px[j], py[j]
-        if j < n and mode[j] != LANDED:
-            qx[j] += ahead * hx[j]
-            qy[j] += ahead * hy[j]
     for j in range(n if p.mtsp_prediction == PREDICT_PATHS else 0):  # a loop, not a branch
         if on_route[j] and mode[j] == SEARCHING:
             qx[j], qy[j] = along_route(j, px, py, wp, wp_next, wp_end, ahead)
