@@ -1,22 +1,23 @@
 """The experiments behind the paper's figures (the paper's Table 3; docs/reproduce.md).
 
-Figures 2–6 read one main sweep (planner × team size × communication range, simulated to ``t_d =
-4000 s``): every ``t_d`` they show comes from the same runs' event times, so one sweep serves
-them all and their numbers agree with each other. Its rows carry the notification staircase of
-the teams that fly the same at every range (mTSP, CovB, mTSP-ConB up to N_r), whose flights it
-shares between its three ranges anyway: Fig. :data:`RANGE_FIG` reads P_s at every range from 100
-m to 3000 m from them. Fig. 7a (imperfect sensing) and Fig. 7b (shadowing) change the mission
-itself and need sweeps of their own; they plot only detection (7a) or notification (7b), so
-their runs stop at that event, which makes them several times faster. So do the sweeps beyond
-the paper (Figs. :data:`BEYOND` and :data:`OTHERS`: drones that report, the other planners),
-which show P_s, mission time and search share, all settled at notification: their runs stop
-there, and their tables have no reachability or connected fraction past a run's stop (NaN). Fig.
-1 times the planners rather than simulating missions. Every experiment uses the one seed
-:data:`SEED`. The paper's figures fly the paper's five planners (:data:`PAPER_PLANNERS`); every
-other registered planner (:func:`sarlink.planner_names`: the IAMSAR search patterns, and any
-planner registered since) is flown over the main grid, with and without drones that report, by
-the ``beyond`` experiment, read when it is built, so that a newly registered planner is compared
-with the paper's without edits here.
+Figures 2–6 read one main sweep (planner × team size × communication range, simulated to
+``t_d = 4000 s``): every ``t_d`` they show comes from the same runs' event times, so one sweep
+serves them all and their numbers agree with each other. Its rows carry the notification
+staircase of the teams that fly the same at every range (mTSP, CovB, mTSP-ConB up to N_r),
+whose flights it shares between its three ranges anyway: Fig. :data:`RANGE_FIG` reads P_s at
+every range from 100 m to 3000 m from them. Fig. 7a (imperfect sensing) and Fig. 7b
+(shadowing) change the mission itself and need sweeps of their own; they plot only detection
+(7a) or notification (7b), so their runs stop at that event, which makes them several times
+faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND` and :data:`OTHERS`: drones
+that report, the other planners), which show P_s, mission time and search share, all settled
+at notification: their runs stop there, and their tables have no reachability or connected
+fraction past a run's stop (NaN). Fig. 1 times the planners rather than simulating missions.
+Every experiment uses the one seed :data:`SEED`. The paper's figures fly the paper's five
+planners (:data:`PAPER_PLANNERS`); every other registered planner
+(:func:`sarlink.planner_names`: the IAMSAR search patterns, and any planner registered since)
+is flown over the main grid, with and without drones that report, by the ``beyond``
+experiment, read when it is built, so that a newly registered planner is compared with the
+paper's without edits here.
 """
 
 from __future__ import annotations
