@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import datetime
-import os
 import platform
 import tempfile
 import time
@@ -55,12 +54,12 @@ def main() -> None:
     choices = get_reading(DEFAULT_READING).choices
     rows = []  # experiment, planner, points, CPU s
     tables: dict[str, list] = defaultdict(list)
-    with tempfile.TemporaryDirectory() as tmp:
-        kernels = cache_root() / "kernels"  # the compiled kernels, but no plan of a run
-        kernels.mkdir(parents=True, exist_ok=True)
+    kernels = cache_root() / "kernels"  # the compiled kernels, but no plan of a run
+    kernels.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp, execution._environment(
+            {"SARLINK_CACHE_DIR": str(Path(tmp) / "cache")}):
         (Path(tmp) / "cache").mkdir()
         (Path(tmp) / "cache" / "kernels").symlink_to(kernels)
-        os.environ["SARLINK_CACHE_DIR"] = str(Path(tmp) / "cache")
         for exp in EXPERIMENTS.values():
             for folder, experiment in _planner_sweeps(exp, args.runs, choices):
                 points = experiment.points()
