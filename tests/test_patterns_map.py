@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 import shapely
-from hypothesis import assume, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from shapely.geometry import LineString
 
@@ -124,15 +124,16 @@ def test_a_pattern_flies_the_valley_and_every_drone_lands(name: str) -> None:
     np.testing.assert_allclose(traj.positions[-1], np.tile(mission.area.bs_xy, (4, 1)))
 
 
-@given(lengths=st.lists(st.floats(0.0, 5000.0), min_size=1, max_size=30),
-       drones=st.integers(1, 30))
-def test_bands_of_tracks_are_contiguous_and_even_up_to_one_track(lengths: list[float],
-                                                                 drones: int) -> None:
+@given(tracks=st.lists(st.floats(0.0, 5000.0), min_size=1, max_size=30).flatmap(
+    lambda lengths: st.tuples(st.just(lengths), st.integers(1, len(lengths)))))
+def test_bands_of_tracks_are_contiguous_and_even_up_to_one_track(
+        tracks: tuple[list[float], int]) -> None:
     """Every track in one band, bands in order, none empty, and no band longer than an equal
     share plus two of the longest track (each cut at the track boundary nearest its share,
-    unless a band would be left empty)."""
+    unless a band would be left empty). At most as many drones as tracks, drawn so (filtering
+    the draws failed Hypothesis's health check now and then)."""
+    lengths, drones = tracks
     weights = np.array(lengths)
-    assume(drones <= len(weights))
     bands = parallel._balanced(weights, drones)
     assert len(bands) == drones and all(len(b) for b in bands)
     np.testing.assert_array_equal(np.concatenate(bands), np.arange(len(weights)))
