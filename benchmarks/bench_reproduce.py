@@ -1,14 +1,14 @@
 """Where the reproduction's time goes: CPU per experiment, planner and figure (issue 22).
 
 Every sweep of ``sarlink reproduce`` (the experiments of :mod:`sarlink.paper.experiments`,
-split by planner as the reproduction splits them, under the default reading) is swept with
-the sweep's own code at a reduced number of runs per grid point, its jobs run in this process
-(CPU time of the work: flights, critical ranges, tables, files; no worker start-up, mTSP
-kernels compiled and each mission's first plan solved beforehand, not counted; the plans of
-the other runs, which the default reading solves per run, are solved in the timing, in a plan
-cache of its own so that plans of an earlier call are not reused), and the CPU is scaled
-linearly to the paper's 2000 runs per point. Figures are drawn from the tables and timed
-too. Run with
+split by planner as the reproduction splits them, under the default reading or ``--reading``)
+is swept with the sweep's own code at a reduced number of runs per grid point, its jobs run in
+this process (CPU time of the work: flights, critical ranges, tables, files; no worker
+start-up). A sweep of one run beforehand, not counted, compiles or loads every kernel the
+sweep uses (the flight's and its readings') and solves run 0's plans; the plans of the other
+runs, which the default reading solves per run, are solved in the timing, in a plan cache of
+its own so that plans of an earlier call are not reused. The CPU is scaled linearly to the
+paper's 2000 runs per point. Figures are drawn from the tables and timed too. Run with
 
     python benchmarks/bench_reproduce.py --runs 20 --out benchmarks/results/reproduce.md
 
@@ -26,7 +26,7 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
-from sarlink import execution, prepare
+from sarlink import execution
 from sarlink.cachedir import cache_root
 from sarlink.config import DEFAULT_READING, get_reading
 from sarlink.execution import sweep_all
@@ -48,10 +48,12 @@ class InProcess:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=20, help="runs per grid point")
+    parser.add_argument("--reading", default=DEFAULT_READING,
+                        help=f"the reading swept (default {DEFAULT_READING})")
     parser.add_argument("--out", type=Path, default=Path("benchmarks/results/reproduce.md"))
     args = parser.parse_args()
     assert plugins_in_code() == ((), ())
-    choices = get_reading(DEFAULT_READING).choices
+    choices = get_reading(args.reading).choices
     rows = []  # experiment, planner, points, CPU s
     tables: dict[str, list] = defaultdict(list)
     kernels = cache_root() / "kernels"  # the compiled kernels, but no plan of a run
@@ -61,10 +63,12 @@ def main() -> None:
         (Path(tmp) / "cache").mkdir()
         (Path(tmp) / "cache" / "kernels").symlink_to(kernels)
         for exp in EXPERIMENTS.values():
+            warm = dict(_planner_sweeps(exp, 1, choices))
             for folder, experiment in _planner_sweeps(exp, args.runs, choices):
                 points = experiment.points()
-                for _, mission in points:  # plans and kernels, outside the timing
-                    prepare(mission).run(experiment.seed, 0)
+                # kernels (the flight's and its readings'), run 0's plans: outside the timing
+                sweep_all([(warm[folder], Path(tmp) / "warm" / folder)], progress=False,
+                          pool=InProcess())
                 start = time.process_time()
                 (frame,) = sweep_all([(experiment, Path(tmp) / folder)], progress=False,
                                      pool=InProcess())
@@ -89,13 +93,14 @@ def main() -> None:
     lines = [
         "# Where the reproduction's time goes",
         "",
-        f"`python benchmarks/bench_reproduce.py --runs {args.runs}`, {datetime.date.today()}, "
+        f"`python benchmarks/bench_reproduce.py --runs {args.runs} --reading {args.reading}`, "
+        f"{datetime.date.today()}, "
         f"{platform.processor() or platform.machine()}, on the shared 2-core host: every sweep "
-        f"of `sarlink reproduce` under the default reading at **{args.runs} runs per grid "
+        f"of `sarlink reproduce` under the reading {args.reading} at **{args.runs} runs per grid "
         f"point** (not the paper's {RUNS}: the machine is shared), its jobs in this process "
         "(CPU of flights, critical ranges, tables and files, and the mTSP plans of each run "
-        "that the reading solves per run; no worker start-up; kernels and each mission's first "
-        f"plan made beforehand), scaled ×{scale:g} to {RUNS} runs per point.",
+        "that the reading solves per run; no worker start-up; kernels and run 0's plans made "
+        f"beforehand by a one-run sweep), scaled ×{scale:g} to {RUNS} runs per point.",
         "",
         "| experiment | figures | planner | points | CPU s measured | ms per run | "
         f"CPU min at {RUNS} runs | share |",
@@ -123,6 +128,19 @@ def main() -> None:
               f"(about {total / 120:.1f} min of wall time on 2 idle cores).", "",
               "Drawing each figure from its tables (independent of the runs), CPU s: " +
               ", ".join(f"Fig. {n} {s:.2f}" for n, s in sorted(drawing.items())) + ".", ""]
+    lines += ["What sharing a prefix could save: a reporting run of `report` flies as the run of "
+              "`main` with the same seed and index until the first detection, so that part of "
+              "its flight (its share of the run's flown time: until the notification, where "
+              "the run stops, or the horizon) need not be flown twice.", "",
+              "| planner | runs | detected | flight before the first detection |",
+              "|---|---|---|---|"]
+    for planner, frame in pd.concat(tables["report"]).groupby("planner", sort=False):
+        flown = frame["t_notify"].fillna(frame["horizon"])
+        before = frame["t_detect"].fillna(frame["horizon"]).clip(upper=flown)
+        lines.append(f"| {get_planner(str(planner)).label} | {len(frame)} | "
+                     f"{frame['t_detect'].notna().mean():.1%} | "
+                     f"{before.sum() / flown.sum():.1%} |")
+    lines.append("")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text("\n".join(lines))
     print("\n".join(lines))
