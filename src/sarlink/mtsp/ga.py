@@ -44,7 +44,7 @@ def _measure(
     lengths go to ``lens[p]``.
 
     The reference, individual ``r`` with tour lengths ``ref_len[r]``, has the same breaks
-    and the same route outside positions ``lo..hi`` (``lo > hi``: everywhere), so a tour
+    and the same route outside positions ``lo..hi`` (``lo = n``: everywhere), so a tour
     that visits none of those positions is the reference's tour: its length is taken, bit
     for bit, not computed again. The total is summed tour by tour in order, exactly as over
     freshly computed lengths. Rows are passed by index, as a view per call would cost two
@@ -227,7 +227,7 @@ def _ga_kernel(
                                             minmax)
                     continue
                 _random_breaks(new_brk, k, n, min_tour, cum_prob, scratch, adjust, rng)
-                lo, hi = 1, 0  # new breaks that are b's: the child is child k - 4 again
+                lo, hi = n, n - 1  # new breaks that are b's: the child is child k - 4 again
                 for q in range(n_breaks):
                     if new_brk[k, q] != new_brk[k - 4, q]:
                         lo, hi = 0, n - 1  # other breaks: every tour is measured
