@@ -227,21 +227,11 @@ def _ga_kernel(
                                             minmax)
                     continue
                 _random_breaks(new_brk, k, n, min_tour, cum_prob, scratch, adjust, rng)
-                # child k - 4's route: the tours before its first other break and after its
-                # last are child k - 4's (none other: the child is child k - 4 again)
-                first, last = n_breaks, -1
+                lo, hi = n, n - 1  # new breaks that are b's: the child is child k - 4 again
                 for q in range(n_breaks):
                     if new_brk[k, q] != new_brk[k - 4, q]:
-                        first = q
+                        lo, hi = 0, n - 1  # other breaks: every tour is measured
                         break
-                for q in range(n_breaks - 1, first - 1, -1):
-                    if new_brk[k, q] != new_brk[k - 4, q]:
-                        last = q
-                        break
-                lo, hi = n, n - 1
-                if last >= 0:  # positions from the first changed tour's start to the last's
-                    lo = new_brk[k, first - 1] if first > 0 else 0
-                    hi = new_brk[k, last]
                 new_costs[k] = _measure(dmat, new_rte, new_brk, new_len, k, new_len, k - 4, lo,
                                         hi, minmax)
         pop_rte, new_rte = new_rte, pop_rte
