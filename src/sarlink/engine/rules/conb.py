@@ -147,17 +147,19 @@ def check_continuously(k: int, p: Params, obs: Observation, ws: Workspace, decid
     clock restarts). Off, there are no increments: every node counts as routed and no drone
     is added.
 
-    An increment's search only has to reach the nodes routed at every earlier one (the goal
-    of :func:`predict_routes`; at the first, every node): the others are out of
-    ``routed_next`` already.
+    The increments are searched from the last to the first, and a search only has to reach
+    the nodes routed at every increment searched before it (the goal of
+    :func:`predict_routes`; at the last, every node): the others are out of ``routed_next``
+    already. The result is the same intersection in any order; the last increment, the
+    farthest ahead, loses the most nodes, so searched first it narrows the others' goal.
 
     Written for Numba's reference-count pruner (docs/architecture.md): no plain call, and
     the check's off state is a loop of no increments rather than a branch, as the pruner
     keeps the counts of an array whose last use lies in one arm of a branch.
     """
     n = obs.hx.shape[0]
-    first_nodes(ws.routed_next, n + 2)  # before the first increment: every node
-    for s in range(1, p.ts_steps + 1 if on else 1):
+    first_nodes(ws.routed_next, n + 2)  # before the first search: every node
+    for s in range(p.ts_steps if on else 0, 0, -1):
         predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, s, ws.qx, ws.qy,
                        ws.disc2, ws.routed_step, ws.expanded, obs.on_route, obs.wp, obs.wp_next,
                        obs.wp_end, ws.routed_next)
