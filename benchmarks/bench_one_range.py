@@ -13,15 +13,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from sarlink import Experiment, execution
+from inprocess import InProcess
+from sarlink import Experiment
 from sarlink.execution import sweep_all
 
 
-class InProcess:
-    def results(self, jobs):  # type: ignore[no-untyped-def]
-        for call, job in zip(execution._calls(jobs), jobs, strict=True):
-            out = execution._run_chunk(*call)
-            yield job, out
 def exp(runs: int) -> Experiment:
     return Experiment.from_dict({"name": "one", "seed": 7, "runs": runs, "chunk": 100,
         "mission": {"team": {"planner": "covb", "drones": 10}}, "grid": {"rc": [1000.0]}})

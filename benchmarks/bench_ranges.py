@@ -29,7 +29,8 @@ from typing import Any
 
 import pandas as pd
 
-from sarlink import Experiment, Mission, execution, prepare, storage
+from inprocess import InProcess
+from sarlink import Experiment, Mission, prepare, storage
 from sarlink.engine import Prepared
 from sarlink.execution import sweep_all
 from sarlink.simulation import plugins_in_code
@@ -42,14 +43,6 @@ def experiment(rcs: list[float], runs: int, drones: int) -> Experiment:
     return Experiment.from_dict({"name": "ranges", "seed": 7, "runs": runs,
                                  "mission": {"team": {"planner": "covb", "drones": drones}},
                                  "grid": {"rc": rcs}})
-
-
-class InProcess:
-    """Workers that run every job in this process, one after the other."""
-
-    def results(self, jobs):  # type: ignore[no-untyped-def]
-        for call, job in zip(execution._calls(jobs), jobs, strict=True):
-            yield job, execution._run_chunk(*call)
 
 
 assert plugins_in_code() == ((), ())  # nothing to hand to a worker: one process is the same

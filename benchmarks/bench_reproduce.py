@@ -26,6 +26,7 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
+from inprocess import InProcess
 from sarlink import execution
 from sarlink.cachedir import cache_root
 from sarlink.config import DEFAULT_READING, get_reading
@@ -35,14 +36,6 @@ from sarlink.paper.figures import FIGURES
 from sarlink.paper.variants import _planner_sweeps
 from sarlink.planners import get_planner
 from sarlink.simulation import plugins_in_code
-
-
-class InProcess:
-    """Workers that run every job in this process, one after the other."""
-
-    def results(self, jobs):  # type: ignore[no-untyped-def]
-        for call, job in zip(execution._calls(jobs), jobs, strict=True):
-            yield job, execution._run_chunk(*call)
 
 
 def main() -> None:
