@@ -15,7 +15,10 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 
 ``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
 as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
-Both revisions must have ``Prepared.record(streams, scenario, trajectory=...)``.
+``--ranges 250,500,...`` times range-free flights read at those ranges as they fly (a sweep
+over ``rc``, :mod:`sarlink.engine.ranges`) instead of recorded flights, and compares every
+range's records. Both revisions must have ``Prepared.record(streams, scenario,
+trajectory=..., read_at=...)``.
 """
 
 from __future__ import annotations
@@ -71,30 +74,33 @@ class Side:
     def __init__(self, mission_of: Any, prepare_of: Any, kernel_of: Any = None) -> None:
         self.mission_of, self.prepare_of, self.kernel_of = mission_of, prepare_of, kernel_of
 
-    def run_once(self, case: str, reading: str, seed: int, run: int) -> tuple[float, Any]:
+    def run_once(self, case: str, reading: str, seed: int, run: int,
+                 read_at: tuple[float, ...] = ()) -> tuple[float, Any]:
+        """Fly run ``run``: recorded, or read at the ranges ``read_at`` if any."""
         prepared = self.prepare_of(self.mission_of(case, reading))
+        how: dict[str, Any] = {"read_at": read_at} if read_at else {"trajectory": True}
         streams = run_streams(seed, run)
         # each side draws with its own revision's draw_scenario, which its run module imports
         draw = sys.modules[type(prepared).__module__].draw_scenario
         scenario = draw(prepared.mission, streams.scenario)
         if self.kernel_of is None:
             start = time.perf_counter()
-            out = prepared.record(streams, scenario, trajectory=True)
+            out = prepared.record(streams, scenario, **how)
         else:
             kernel = self.kernel_of(prepared)
-            args = prepared.arguments(streams, scenario, trajectory=True)
+            args = prepared.arguments(streams, scenario, **how)
             start = time.perf_counter()
             out = kernel(*args)
         return time.perf_counter() - start, out
 
 
 def outcome(out: Any) -> list[np.ndarray]:
-    """A run record as a list of arrays: events, records, trajectory."""
+    """A run record as a list of arrays: events, records, trajectory, records at each range."""
     events = np.array([out.t_detect, out.t_notify, float(out.detector),
                        1.0 if out.immediate else 0.0])
-    tr = out.track
+    tr, at = out.track, out.at_ranges
     return [events, out.reach_cum, out.conn_cum, tr.positions, tr.headings, tr.knows,
-            tr.bs_route, tr.mode]
+            tr.bs_route, tr.mode, at.notified, at.reach_cum, at.conn_cum]
 
 
 def case_mission(case: str, reading: str) -> Mission:
@@ -142,23 +148,25 @@ def sides(rev: str, folder: Path) -> dict[str, Side]:
                                                                uncached(None))}
 
 
-def measure(rev: str, case: str, runs: int, rounds: int, new_first: bool, reading: str) -> None:
+def measure(rev: str, case: str, runs: int, rounds: int, new_first: bool, reading: str,
+            read_at: tuple[float, ...]) -> None:
     """Print ``identical speed-up`` for one case, with the kernels compiled in one order."""
     with tempfile.TemporaryDirectory() as tmp:
         both = sides(rev, Path(tmp))
         order = ("new", "old") if new_first else ("old", "new")
         for tag in order:  # compile in that order
-            both[tag].run_once(case, reading, 1, 0)
+            both[tag].run_once(case, reading, 1, 0, read_at)
         same = sum(all(np.array_equal(a, b, equal_nan=a.dtype.kind == "f") for a, b in
-                       zip(outcome(both["old"].run_once(case, reading, 1, r)[1]),
-                           outcome(both["new"].run_once(case, reading, 1, r)[1]),
+                       zip(outcome(both["old"].run_once(case, reading, 1, r, read_at)[1]),
+                           outcome(both["new"].run_once(case, reading, 1, r, read_at)[1]),
                            strict=True))
                    for r in range(runs))
         ratios = []
         for rnd in range(rounds):
             for r in range(runs):
                 pair_order = ["old", "new"][:: 1 if (rnd + r) % 2 == 0 else -1]
-                pair = {tag: both[tag].run_once(case, reading, 1, r)[0] for tag in pair_order}
+                pair = {tag: both[tag].run_once(case, reading, 1, r, read_at)[0]
+                        for tag in pair_order}
                 ratios.append(pair["old"] / pair["new"])
     print(same, np.median(ratios))
 
@@ -174,18 +182,23 @@ def main() -> None:
     parser.add_argument("--reading", default="sarlink-1",
                         help="the reading of the paper to fly (default: sarlink-1, the rules "
                              "of kernels before readings were selectable)")
+    parser.add_argument("--ranges", default="",
+                        help="comma-separated ranges (m): fly each case read at them (a "
+                             "range-free team) instead of recorded")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
+    read_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
     if args.one:  # one compile order, in a process of its own
         measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
-                args.reading)
+                args.reading, read_at)
         return
     for case in args.cases.split(","):
         results = {}
         for order in ("old-first", "new-first"):
             out = subprocess.run([sys.executable, __file__, args.rev, "--cases", case,
                                   "--runs", str(args.runs), "--rounds", str(args.rounds),
-                                  "--reading", args.reading, "--one", order],
+                                  "--reading", args.reading, "--ranges", args.ranges,
+                                  "--one", order],
                                  check=True, capture_output=True, text=True)
             same, ratio = out.stdout.split()
             results[order] = (int(same), float(ratio))

@@ -342,7 +342,7 @@ class Reading(NamedTuple):
     """``(ranges,)``: whether the graph at a range changed this step."""
     moved: np.ndarray
     """``(ranges,)``: whether the BS's component or the target's links may have changed with
-    it (:func:`_band_links`)."""
+    it (:func:`_band_link`)."""
     notified: np.ndarray
     """Per range: the step of the notification (``-1``: never)."""
     reach_cum: np.ndarray
@@ -364,7 +364,8 @@ class Reading(NamedTuple):
 @njit(cache=True, error_model="numpy")
 def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
     """The reading of a flight of ``n`` drones (``mp`` padded nodes) at the squared ranges
-    ``r2s``, before its first step: no link at any range yet."""
+    ``r2s``, before its first step: no link at any range yet, so that the BS's component is
+    the BS alone, the target unreachable and no drone connected."""
     m = n + 2
     rank = np.argsort(r2s, kind="mergesort")
     thr = r2s[rank]
@@ -376,18 +377,37 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
         bounds[0, a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
     nw = (m + 63) // 64
     notified, reach_cum, conn_cum, acc_reach, acc_conn, going, _, _ = _records(nr, checkpoints)
+    routed = np.zeros((nr, nw), dtype=np.uint64)
+    for j in range(nr):
+        graph.add(routed[j], n)
     return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds,
-                   np.zeros((nr, m, nw), dtype=np.uint64), np.zeros((nr, nw), dtype=np.uint64),
+                   np.zeros((nr, m, nw), dtype=np.uint64), routed,
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
-                   np.ones(nr, dtype=np.bool_), np.ones(nr, dtype=np.bool_), notified,
+                   np.zeros(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_), notified,
                    reach_cum, conn_cum, acc_reach, acc_conn, going, np.zeros(nr),
                    np.zeros(nr))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def _relayed(adj: np.ndarray, a: int, b: int, tg: int) -> bool:
+    """Whether nodes ``a`` and ``b`` have a common neighbour other than the target ``tg``
+    (which never relays): then they stay linked through it when their own link goes."""
+    common = _ZERO
+    for w in range(adj.shape[1]):
+        word = adj[a, w] & adj[b, w]
+        if w == tg >> 6:
+            word &= ~(_ONE << np.uint64(tg & 63))
+        common |= word
+    return common != _ZERO
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
     """Link ``a < b``, of key ``v``, into its band: toggled in the graphs of the ranges
-    between its old band and its new one, whose BS component may then have moved."""
+    between its old band and its new one, whose BS component (and reachability) is marked
+    as moved where the toggle may change it. It may not if the link joins two nodes of the
+    same side of the component, leaves one of its nodes linked to the other through a third
+    (:func:`_relayed`), or links the target (a leaf, node ``m - 1``) to a node off it."""
     m = rd.band.shape[0]
     thr = rd.thr
     nr = thr.shape[0]
@@ -398,8 +418,12 @@ def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
         rd.changed[j] = True
         if not rd.moved[j]:  # the component as of the step before, still right
             joined = graph.has(rd.routed[j], a), graph.has(rd.routed[j], b)
-            rd.moved[j] = b == m - 1 or (joined[0] != joined[1] if now < was
-                                         else joined[0] and joined[1])
+            if b == m - 1:
+                rd.moved[j] = joined[0]
+            elif now < was:  # the link is new at range j
+                rd.moved[j] = joined[0] != joined[1]
+            else:
+                rd.moved[j] = joined[0] and joined[1] and not _relayed(rd.adj[j], a, b, m - 1)
     rd.band[a, b] = now
     rd.bounds[0, a, b] = thr[now - 1] if now > 0 else -_INF
     rd.bounds[1, a, b] = thr[now] if now < nr else _INF
@@ -408,7 +432,7 @@ def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
 @njit(cache=True, inline="always", error_model="numpy")
 def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray,
                 shadowed: bool, rd: Reading, near: np.ndarray, r2: float,
-                with_near: bool) -> None:
+                with_near: bool) -> bool:
     """Bring the graph at every range up to date with this step's positions and fades and,
     if ``with_near``, the pairs within squared sensing range ``r2`` (``near``, as
     :func:`sarlink.engine.graph.links` gives them: the flight has no link pass of its own).
@@ -419,11 +443,12 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     and of the padding are never crossed). Only a row in which a link left its band is
     computed again, as the bitset of those links, and only they change a graph, at the
     ranges between the old and the new band. Under shadowing every link's key moves with its
-    fade, so every link is looked at.
+    fade, so every link is looked at. Returns whether any graph changed.
     """
     m = rd.band.shape[0]
     mp = px.shape[0]
     lo, hi = rd.bounds[0], rd.bounds[1]
+    toggled = False
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
         out = False
@@ -444,9 +469,11 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
                 v = _effective(d2(xa, ya, za, px[b], py[b], pz[b]), fade[a, b])
                 if not lo[a, b] < v <= hi[a, b]:
                     _band_link(a, b, v, rd)
+                    toggled = True
             continue
         if not out:
             continue
+        toggled = True
         for w in range(rd.adj.shape[2]):  # the links that left their band, as a bitset
             first = w * 64
             left = np.uint64(0)
@@ -458,6 +485,7 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
                 b = first + graph.lowest(left)
                 left &= left - _ONE
                 _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), rd)
+    return toggled
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -472,7 +500,7 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     :mod:`sarlink.engine.graph`), the notification and the step's records.
 
     A range's component and reachability are found again only where a change of its graph
-    may have moved them (:func:`_band_links`), and its knowledge flooded again only when its
+    may have moved them (:func:`_band_link`), and its knowledge flooded again only when its
     graph or the knowers changed and its BS is not notified yet. ``fade`` are the radio's bare
     fades (the kernel's thresholds at ``r_c = 1``) and ``sensed`` the drones that sensed the
     target (a range-free flight floods nothing).
@@ -484,30 +512,25 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     for i in range(n):
         new_knower |= sensed[i] and not rd.counted[i]
         rd.counted[i] = sensed[i]
-    _band_links(px, py, pz, fade, p.sigma > 0.0, rd, near, p.r * p.r, with_near)
-    notified_now = False
+    toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, rd, near, p.r * p.r, with_near)
+    stop = k == p.n_steps or (p.stop == STOP_DETECTED and detected)
     for j in range(rd.thr.shape[0]):
-        if rd.moved[j]:
-            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
-            reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
-                                                      p.reachability)
-            rd.d_reach[j] = p.dt if reachable else 0.0
-            rd.d_conn[j] = p.dt * connected / n
-        if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
-            for i in range(n):
-                rd.knows[j, i] |= sensed[i]
-            if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
-                rd.notified[j] = k
-                notified_now = True
-        rd.changed[j] = rd.moved[j] = False
-    # the step's records, added at every range at once: a range whose run stopped takes no
-    # more checkpoints (_open_step), so what is added to it after does not matter
-    if k == p.n_steps or (p.stop == STOP_DETECTED and detected):
-        rd.going[:] = False
-    elif p.stop == STOP_NOTIFIED and notified_now:
-        for j in range(rd.thr.shape[0]):
-            rd.going[j] &= rd.notified[j] < 0
-    for j in range(rd.thr.shape[0]):
+        if toggled or new_knower:  # else no graph changed, and nothing is to be flooded
+            if rd.moved[j]:
+                graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
+                reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
+                                                          p.reachability)
+                rd.d_reach[j] = p.dt if reachable else 0.0
+                rd.d_conn[j] = p.dt * connected / n
+            if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
+                for i in range(n):
+                    rd.knows[j, i] |= sensed[i]
+                if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
+                    rd.notified[j] = k
+            rd.changed[j] = rd.moved[j] = False
+        # the step's records: a range whose run stopped takes no more checkpoints
+        # (_open_step), so what is added to it after does not matter
+        rd.going[j] &= not stop and (p.stop != STOP_NOTIFIED or rd.notified[j] < 0)
         rd.acc_reach[j] += rd.d_reach[j]
         rd.acc_conn[j] += rd.d_conn[j]
 
