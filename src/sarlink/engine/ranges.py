@@ -451,40 +451,33 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     toggled = False
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
-        out = False
         for w in range(rd.adj.shape[2]):
             first = w * 64
             close = np.uint64(0)
+            left = np.uint64(0)  # the links that left their band
             for b in range(first, min(mp, first + 64)):
                 dd = d2(xa, ya, za, px[b], py[b], pz[b])
-                out |= (dd <= lo[a, b]) | (dd > hi[a, b])
+                shift = np.uint64(b - first)
+                left |= (_ONE if (dd <= lo[a, b]) | (dd > hi[a, b]) else _ZERO) << shift
                 if with_near:
-                    close |= (_ONE if dd <= r2 else _ZERO) << np.uint64(b - first)
+                    close |= (_ONE if dd <= r2 else _ZERO) << shift
             if with_near:
                 if w == a >> 6:  # a node is not its own neighbour
                     close &= ~(_ONE << np.uint64(a & 63))
                 near[a, w] = close
+            if shadowed:
+                continue
+            toggled |= left != _ZERO
+            while left:
+                b = first + graph.lowest(left)
+                left &= left - _ONE
+                _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), rd)
         if shadowed:  # every link's key moves with its fade
             for b in range(a + 1, m):
                 v = _effective(d2(xa, ya, za, px[b], py[b], pz[b]), fade[a, b])
                 if not lo[a, b] < v <= hi[a, b]:
                     _band_link(a, b, v, rd)
                     toggled = True
-            continue
-        if not out:
-            continue
-        toggled = True
-        for w in range(rd.adj.shape[2]):  # the links that left their band, as a bitset
-            first = w * 64
-            left = np.uint64(0)
-            for b in range(first, min(mp, first + 64)):
-                dd = d2(xa, ya, za, px[b], py[b], pz[b])
-                left |= (_ONE if (dd <= lo[a, b]) | (dd > hi[a, b]) else _ZERO) << np.uint64(
-                    b - first)
-            while left:
-                b = first + graph.lowest(left)
-                left &= left - _ONE
-                _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), rd)
     return toggled
 
 
