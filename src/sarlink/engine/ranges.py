@@ -506,24 +506,30 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
         new_knower |= sensed[i] and not rd.counted[i]
         rd.counted[i] = sensed[i]
     toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, rd, near, p.r * p.r, with_near)
-    stop = k == p.n_steps or (p.stop == STOP_DETECTED and detected)
+    notified_now = False
+    # a step that changed no graph and no knower moves no component and floods nothing
+    for j in range(rd.thr.shape[0] if toggled or new_knower else 0):
+        if rd.moved[j]:
+            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
+            reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
+                                                      p.reachability)
+            rd.d_reach[j] = p.dt if reachable else 0.0
+            rd.d_conn[j] = p.dt * connected / n
+        if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
+            for i in range(n):
+                rd.knows[j, i] |= sensed[i]
+            if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
+                rd.notified[j] = k
+                notified_now = True
+        rd.changed[j] = rd.moved[j] = False
+    # the step's records, added at every range at once: a range whose run stopped takes no
+    # more checkpoints (_open_step), so what is added to it after does not matter
+    if k == p.n_steps or (p.stop == STOP_DETECTED and detected):
+        rd.going[:] = False
+    elif p.stop == STOP_NOTIFIED and notified_now:
+        for j in range(rd.thr.shape[0]):
+            rd.going[j] &= rd.notified[j] < 0
     for j in range(rd.thr.shape[0]):
-        if toggled or new_knower:  # else no graph changed, and nothing is to be flooded
-            if rd.moved[j]:
-                graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
-                reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
-                                                          p.reachability)
-                rd.d_reach[j] = p.dt if reachable else 0.0
-                rd.d_conn[j] = p.dt * connected / n
-            if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
-                for i in range(n):
-                    rd.knows[j, i] |= sensed[i]
-                if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
-                    rd.notified[j] = k
-            rd.changed[j] = rd.moved[j] = False
-        # the step's records: a range whose run stopped takes no more checkpoints
-        # (_open_step), so what is added to it after does not matter
-        rd.going[j] &= not stop and (p.stop != STOP_NOTIFIED or rd.notified[j] < 0)
         rd.acc_reach[j] += rd.d_reach[j]
         rd.acc_conn[j] += rd.d_conn[j]
 
