@@ -35,7 +35,7 @@ from sarlink.engine import Prepared
 from sarlink.execution import sweep_all
 from sarlink.simulation import plugins_in_code
 
-ROUNDS = 15
+ROUNDS = 31
 RANGES = [250.0, 500.0, 750.0, 1000.0, 1250.0, 1500.0, 2000.0, 3000.0]
 
 
@@ -111,9 +111,12 @@ def compare(runs: int, drones: int, root: Path) -> dict[str, Any]:
     for rcs in ([1000.0], RANGES):  # compile or load the kernel and the reading
         timed_sweep(rcs, 2, drones, root / f"warm{drones}-{len(rcs)}")
     ones, eights = [], []
-    for i in range(ROUNDS):  # the host's speed drifts: interleaved, the best of each
+    for i in range(ROUNDS):  # the host's speed drifts: interleaved, each first in turn
+        if i % 2:
+            eight, together = timed_sweep(RANGES, runs, drones, root / f"eight{drones}-{i}")
         ones.append(timed_sweep([1000.0], runs, drones, root / f"one{drones}-{i}")[0])
-        eight, together = timed_sweep(RANGES, runs, drones, root / f"eight{drones}-{i}")
+        if not i % 2:
+            eight, together = timed_sweep(RANGES, runs, drones, root / f"eight{drones}-{i}")
         eights.append(eight)
     apart = pd.concat([timed_sweep([rc], runs, drones, root / f"{drones}-{rc:g}")[1]
                        for rc in RANGES])
@@ -144,8 +147,9 @@ def main() -> None:
         f"{' '.join(map(str, args.drones))}`, {datetime.date.today()}, "
         f"{platform.processor() or platform.machine()}, the sweeps' jobs run in the "
         "benchmark's process: CPU time of the whole sweep (flights, tables, files), without "
-        f"a worker's start-up; the best of {ROUNDS} rounds, the two sweeps interleaved (and "
-        "the median of the ratios of the two sweeps of each round, taken a few seconds apart).",
+        f"a worker's start-up; the best of {ROUNDS} rounds, the two sweeps interleaved, each "
+        "first in every other round (and the median of the ratios of the two sweeps of each "
+        "round, taken a few seconds apart).",
         "",
         f"CovB, {args.runs} runs per point of 4000 s, chunks of {chunk} runs (the default); "
         f"8 ranges: {', '.join(f'{r:g}' for r in RANGES)} m; one range: 1000 m.",

@@ -349,3 +349,61 @@ def test_summarize_at_an_unflown_range_on_the_command_line(tmp_path: Path) -> No
     assert (row["notified"], row["detected"]) == (expected["notified"], expected["detected"])
     bad = CliRunner().invoke(app, ["summarize", str(tmp_path / "grid"), "--rc", "0"])
     assert bad.exit_code == 2 and "rc must be" in bad.output
+
+
+def _component(links: set[tuple[int, int]], n: int) -> set[int]:
+    """The BS's (node ``n``) component of a graph given as links ``a < b``, through drones and
+    the BS only (the target, node ``n + 1``, never relays), by plain breadth-first search."""
+    seen, todo = {n}, [n]
+    while todo:
+        a = todo.pop()
+        for b in {y for x, y in links if x == a} | {x for x, y in links if y == a}:
+            if b not in seen and b != n + 1:
+                seen.add(b)
+                todo.append(b)
+    return seen
+
+
+@given(n=st.integers(1, 7), steps=st.integers(1, 60), seed=st.integers(0, 2**32 - 1),
+       rcs=st.lists(st.floats(20.0, 400.0), min_size=1, max_size=5), shadowed=st.booleans(),
+       move=st.sampled_from([5.0, 40.0]))
+def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int, seed: int,
+                                                            rcs: list[float], shadowed: bool,
+                                                            move: float) -> None:
+    """After each step's pass over the links (``ranges._band_links``), the graph at every range
+    is the links within it, and a range not marked as moved still holds the BS component of
+    that graph and the reachability found when it last moved: the marks may skip a search only
+    where neither can have changed."""
+    from sarlink.engine import graph, ranges
+    from sarlink.engine.geometry import FAR, PAD
+
+    rng = np.random.default_rng(seed)
+    m = n + 2
+    mp = (m + PAD - 1) // PAD * PAD
+    rd = ranges.new_reading(np.array(rcs) ** 2, n, mp, 1)
+    px, py, pz = np.full(mp, FAR), np.full(mp, FAR), np.zeros(mp)
+    px[n:m], py[n:m] = (0.0, 150.0), (0.0, 150.0)  # the BS, the target
+    fade = rng.lognormal(0.0, 0.5, (m, m)) if shadowed else np.ones((0, 0))
+    near = np.zeros((m, rd.adj.shape[2]), dtype=np.uint64)
+    stack = np.empty(m, dtype=np.int64)
+    found = [(False, 0)] * len(rcs)  # reachability and connected drones, as last found
+    pos = rng.uniform(0.0, 300.0, (n, 2))
+    for _ in range(steps):  # moves that change a link or two, or several ranges at once
+        pos += rng.normal(0.0, move, pos.shape)
+        px[:n], py[:n] = pos[:, 0], pos[:, 1]
+        ranges._band_links(px, py, pz, fade, shadowed, rd, near, 0.0, False)
+        for j, r2 in enumerate(rd.thr):
+            links = {(a, b) for a in range(m) for b in range(a + 1, m)
+                     if (px[a] - px[b]) ** 2 + (py[a] - py[b]) ** 2
+                     <= (r2 * fade[a, b] if shadowed else r2)}
+            bits = {(a, b) for a in range(m) for b in range(a + 1, m)
+                    if graph.linked(rd.adj[j], a, b)}
+            assert bits == links
+            routed = _component(links, n)
+            now = (any((a, n + 1) in links for a in routed), len(routed) - 1)
+            if not rd.moved[j]:
+                assert {a for a in range(m) if graph.has(rd.routed[j], a)} == routed
+                assert now == found[j]
+            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
+            found[j] = now
+            rd.moved[j] = rd.changed[j] = False
