@@ -440,10 +440,10 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     Every link sits in a *band*, the number of ranges below its key: it exists at the ranges
     from its band on. Every ``d²`` is computed as the link pass computes it (whole padded
     rows, word by word, in vectors) and compared with its band's bounds (those of ``a >= b``
-    and of the padding are never crossed). Only a row in which a link left its band is
-    computed again, as the bitset of those links, and only they change a graph, at the
-    ranges between the old and the new band. Under shadowing every link's key moves with its
-    fade, so every link is looked at. Returns whether any graph changed.
+    and of the padding are never crossed), which gives the bitset of the links that left
+    their band; only they change a graph, at the ranges between the old and the new band.
+    Under shadowing every link's key moves with its fade, so every link is looked at.
+    Returns whether any graph changed.
     """
     m = rd.band.shape[0]
     mp = px.shape[0]
