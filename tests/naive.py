@@ -41,7 +41,7 @@ def _inside(p: tuple[float, float], a: float) -> bool:
     return 0 <= p[0] <= a and 0 <= p[1] <= a
 
 
-def _component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[int]:
+def component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[int]:
     """All nodes linked to ``start``, never passing through ``blocked``."""
     seen = set(start)
     queue = deque(start)
@@ -181,7 +181,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         ahead = [p if mode[j] == "landed" else
                  (p[0] + v * seconds * math.cos(heading[j]),
                   p[1] + v * seconds * math.sin(heading[j])) for j, p in enumerate(pos)]
-        return _component({BS}, link_graph(ahead, faded=False), blocked=TG)
+        return component({BS}, link_graph(ahead, faded=False), blocked=TG)
 
     def inward(i: int, h: float) -> float:
         """Boundary rule: a uniform heading in the half (quarter) circle facing into the area."""
@@ -232,8 +232,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                         t_det = t
             in_range[i] = now_in
         links = link_graph(pos, faded=True)
-        routed = _component({BS}, links, blocked=TG)
-        informed = _component({i for i in range(n) if knows[i]}, links, blocked=TG)
+        routed = component({BS}, links, blocked=TG)
+        informed = component({i for i in range(n) if knows[i]}, links, blocked=TG)
         for i in informed - {BS}:
             knows[i] = True
         if t_not is None and BS in informed:

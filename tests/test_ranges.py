@@ -19,6 +19,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from naive import component
 from sarlink import ConfigError, Experiment, Mission, execution, storage
 from sarlink.engine import RadioModel
 from sarlink.engine.radios import lognormal
@@ -351,19 +352,6 @@ def test_summarize_at_an_unflown_range_on_the_command_line(tmp_path: Path) -> No
     assert bad.exit_code == 2 and "rc must be" in bad.output
 
 
-def _component(links: set[tuple[int, int]], n: int) -> set[int]:
-    """The BS's (node ``n``) component of a graph given as links ``a < b``, through drones and
-    the BS only (the target, node ``n + 1``, never relays), by plain breadth-first search."""
-    seen, todo = {n}, [n]
-    while todo:
-        a = todo.pop()
-        for b in {y for x, y in links if x == a} | {x for x, y in links if y == a}:
-            if b not in seen and b != n + 1:
-                seen.add(b)
-                todo.append(b)
-    return seen
-
-
 @given(n=st.integers(1, 7), steps=st.integers(1, 60), seed=st.integers(0, 2**32 - 1),
        rcs=st.lists(st.floats(20.0, 400.0), min_size=1, max_size=5), shadowed=st.booleans(),
        move=st.sampled_from([5.0, 40.0]))
@@ -399,7 +387,11 @@ def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int,
             bits = {(a, b) for a in range(m) for b in range(a + 1, m)
                     if graph.linked(rd.adj[j], a, b)}
             assert bits == links
-            routed = _component(links, n)
+            around: dict[int, set[int]] = {a: set() for a in range(m)}
+            for a, b in links:
+                around[a].add(b)
+                around[b].add(a)
+            routed = component({n}, around, blocked=n + 1)  # the target never relays
             now = (any((a, n + 1) in links for a in routed), len(routed) - 1)
             if not rd.moved[j]:
                 assert {a for a in range(m) if graph.has(rd.routed[j], a)} == routed
