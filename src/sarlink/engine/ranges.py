@@ -405,9 +405,10 @@ def _relayed(adj: np.ndarray, a: int, b: int, tg: int) -> bool:
 def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
     """Link ``a < b``, of key ``v``, into its band: toggled in the graphs of the ranges
     between its old band and its new one, whose BS component (and reachability) is marked
-    as moved where the toggle may change it. It may not if the link joins two nodes of the
-    same side of the component, leaves one of its nodes linked to the other through a third
-    (:func:`_relayed`), or links the target (a leaf, node ``m - 1``) to a node off it."""
+    as moved where the toggle may change it. It cannot if the link is new between two nodes
+    on the same side of the component, is lost between two nodes not both in it or between two
+    that stay linked through a third (:func:`_relayed`), or links the target (a leaf, node
+    ``m - 1``) to a node off the component."""
     m = rd.band.shape[0]
     thr = rd.thr
     nr = thr.shape[0]
