@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 from naive import component
 from sarlink import ConfigError, Experiment, Mission, execution, storage
-from sarlink.engine import RadioModel
+from sarlink.engine import RadioModel, sharing
 from sarlink.engine.radios import lognormal
 from sarlink.engine.streams import copied, run_streams
 from sarlink.execution import sweep
@@ -266,15 +266,15 @@ def test_a_one_range_job_flies_as_before_unless_asked_for_the_staircase(
     monkeypatch.setattr(Prepared, "run_ranges", counted)
     one = Mission.build(planner="covb", drones=4, rc=700.0, horizon=800.0)
     text = one.model_dump_json()
-    (plain,) = execution._run_chunk([text], 2, 0, 3, False, plugins_in_code())
+    (plain,) = execution._run_chunk([text], [False], 2, 0, 3, plugins_in_code())
     assert read == [] and "notify_times" not in plain.column_names
-    (stairs,) = execution._run_chunk([text], 2, 0, 3, True, plugins_in_code())
+    (stairs,) = execution._run_chunk([text], [True], 2, 0, 3, plugins_in_code())
     assert len(read) == 3 and "notify_times" in stairs.column_names
     pd.testing.assert_frame_equal(
         stairs.drop_columns(["notify_times", "notify_rc2"]).to_pandas(), plain.to_pandas())
     read.clear()
     two = [text, one.replace(rc=1400.0).model_dump_json()]
-    first, _ = execution._run_chunk(two, 2, 0, 3, False, plugins_in_code())
+    first, _ = execution._run_chunk(two, [False, False], 2, 0, 3, plugins_in_code())
     assert len(read) == 3
     pd.testing.assert_frame_equal(first.to_pandas(), plain.to_pandas())
 
@@ -291,8 +291,9 @@ def test_routes_that_read_the_range_are_flown_per_range() -> None:
         return Prepared.build(m, Steering(rule=None, routes=(route, route)))
 
     assert all(p.range_free for p in map(routed, missions))
-    assert not execution._one_flight([routed(m) for m in missions])
-    assert execution._one_flight([prepare(m) for m in missions])
+    flat = [False, False]
+    assert sharing._range_groups([routed(m) for m in missions], flat) == [[0], [1]]
+    assert sharing._range_groups([prepare(m) for m in missions], flat) == [[0, 1]]
 
 
 def halved_init(p: object, rp: np.ndarray, m: int, mp: int) -> np.ndarray:

@@ -6,14 +6,16 @@ process pool or on a Dask cluster, and writes each finished task as one Parquet 
 the same for several experiments on one set of workers, which :func:`start_workers` can keep
 across calls (``sarlink design`` sweeps its candidates in rounds).
 
-The points of a grid over ``rc`` whose team may fly the same at every range (a route
-planner, a rule declared ``range_free`` such as CovB, drones that do not report: see
-:attr:`sarlink.engine.run.Prepared.range_free`) share their flights: the tasks of such points
-with the same runs are one job, which flies each run once and reads it at every range
-(:mod:`sarlink.engine.ranges`), with the same rows as one flight per range. A job of one
-range flies as before, unless the experiment asks for the notification staircase
-(``Experiment.staircase``): a flight read at several ranges costs more than a plain one,
-which only a job of several ranges earns back.
+Tasks that may share their flights are one job (:mod:`sarlink.engine.sharing`), with the same
+rows as flying each: the same runs, with the same seed, of the points of a team that may fly
+the same at every range (a route planner, a rule declared ``range_free`` such as CovB, drones
+that do not report: see :attr:`sarlink.engine.run.Prepared.range_free`) that differ only in
+``rc``, each run flown once and read at every range (:mod:`sarlink.engine.ranges`); and of a
+mission with drones that report and the same mission without reporting, whose runs the former
+are taken from wherever no drone reports, in whichever folders they are (the paper's ``main``
+and ``report``). A job of one range flies as before, unless the experiment asks for the
+notification staircase (``Experiment.staircase``): a flight read at several ranges costs more
+than a plain one, which only a job of several ranges earns back.
 """
 
 from __future__ import annotations
@@ -30,7 +32,6 @@ from contextlib import ExitStack, closing, contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple, Protocol
 
-import numpy as np
 import pandas as pd
 import pyarrow as pa
 from rich.progress import (
@@ -47,9 +48,9 @@ from rich.text import Text
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.engine import Prepared
 from sarlink.engine.build import radio_identity
 from sarlink.engine.radios import get_radio
+from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner
 from sarlink.simulation import (
     Plugins,
@@ -74,8 +75,9 @@ class _Task(NamedTuple):
 
 
 _Job = tuple[_Task, ...]
-"""Tasks run together: one, or the points of a team that may fly the same at every range and
-differ only in ``rc`` (the same folder and runs), flown once."""
+"""Tasks run together: one, or tasks of the same runs that may share their flights (the
+points of a team that may fly the same at every range, differing only in ``rc``; a mission
+with drones that report and the same without)."""
 
 _Results = Generator[tuple[_Job, list[pa.Table]], None, None]
 """Finished jobs and their tables (one per task), in order of completion."""
@@ -98,25 +100,27 @@ def _plan(store: storage.Store, runs: int, chunk: int, staircase: bool = False) 
 
 def _may_share(mission: Mission) -> bool:
     """Whether ``mission``'s team may fly the same at every range, from its planner and radio
-    alone (the worker checks the routes: :func:`_one_flight`)."""
+    alone (the worker checks the routes: :mod:`sarlink.engine.sharing`)."""
     rule = get_planner(mission.team.planner).rule
     return (get_radio(mission.radio).range_free and mission.team.on_detect != "report"
             and (rule is None or rule.range_free or get_planner(mission.team.planner).kind
                  == "hybrid"))
 
 
+def _flight(mission: Mission) -> str:
+    """What the tasks of one job have in common: ``mission`` without reporting, and at no
+    particular range if its team may fly the same at every range."""
+    base = mission.replace(on_detect="continue", reporters="knowers", stop="horizon")
+    return (base.replace(rc=1.0) if _may_share(base) else base).model_dump_json()
+
+
 def _jobs(tasks: Sequence[_Task]) -> list[_Job]:
-    """The tasks as jobs: those of points that may share their flights and differ only in
-    ``rc`` together, in the order of their first task."""
+    """The tasks as jobs: those of the same seed and runs whose missions may share their
+    flights (:func:`_flight`) together, in the order of their first task."""
     groups: dict[tuple[Any, ...], list[_Task]] = {}
     jobs: list[_Job | None] = []
     for task in tasks:
-        mission = task.point.mission
-        if not _may_share(mission):
-            jobs.append((task,))
-            continue
-        key = (id(task.store), task.runs.start, task.runs.stop,
-               mission.replace(rc=1.0).model_dump_json())
+        key = (task.store.seed, task.runs.start, task.runs.stop, _flight(task.point.mission))
         if key not in groups:
             groups[key] = []
             jobs.append(None)  # a placeholder, keeping the order of the tasks
@@ -125,40 +129,23 @@ def _jobs(tasks: Sequence[_Task]) -> list[_Job]:
     return [job if job is not None else tuple(next(grouped)) for job in jobs]
 
 
-def _one_flight(prepared: Sequence[Prepared]) -> bool:
-    """Whether the missions of ``prepared`` (one team at several ranges) are one flight:
-    each range-free, with the same routes (a route function may read ``rc``)."""
-    first = prepared[0]
-    return all(p.range_free and np.array_equal(p.waypoints, first.waypoints)
-               and np.array_equal(p.wp_start, first.wp_start)
-               and np.array_equal(p.radio_params, first.radio_params) for p in prepared)
-
-
-def _run_chunk(mission_jsons: list[str], seed: int, start: int, stop: int, staircase: bool,
-               plugins: Plugins) -> list[pa.Table]:
+def _run_chunk(mission_jsons: list[str], staircase: list[bool], seed: int, start: int,
+               stop: int, plugins: Plugins) -> list[pa.Table]:
     """A job: runs ``start .. stop-1`` of each mission, as a table each (in a worker process,
-    with the plug-ins its caller registered in code).
-
-    Several missions of one range-free team at several ranges are flown once per run and read
-    at each range; so is one with ``staircase``, whose rows then carry it.
-    """
+    with the plug-ins its caller registered in code), sharing the flights they share
+    (:func:`sarlink.engine.sharing.fly`; ``staircase``: each mission's rows carry it)."""
     adopt_plugins(plugins)
     missions = [Mission.model_validate_json(text) for text in mission_jsons]
-    prepared = [prepare(mission) for mission in missions]
-    if (len(missions) > 1 or staircase) and _one_flight(prepared):
-        rcs = [m.channel.rc for m in missions]
-        by_range = zip(*(prepared[0].run_ranges(seed, k, rcs, staircase=staircase)
-                         for k in range(start, stop)), strict=True)
-        return [storage.run_table(m, seed, r) for m, r in zip(missions, by_range, strict=True)]
-    return [storage.run_table(m, seed, [p.run(seed, k) for k in range(start, stop)])
-            for m, p in zip(missions, prepared, strict=True)]
+    rows = fly([prepare(mission) for mission in missions], staircase, seed, range(start, stop))
+    return [storage.run_table(m, seed, r) for m, r in zip(missions, rows, strict=True)]
 
 
-def _calls(jobs: Sequence[_Job]) -> list[tuple[list[str], int, int, int, bool, Plugins]]:
+def _calls(jobs: Sequence[_Job]
+           ) -> list[tuple[list[str], list[bool], int, int, int, Plugins]]:
     texts = {t.point.hash: t.point.mission.model_dump_json() for job in jobs for t in job}
     plugins = plugins_in_code()
-    return [([texts[t.point.hash] for t in job], job[0].store.seed, job[0].runs.start,
-             job[0].runs.stop, job[0].staircase, plugins) for job in jobs]
+    return [([texts[t.point.hash] for t in job], [t.staircase for t in job], job[0].store.seed,
+             job[0].runs.start, job[0].runs.stop, plugins) for job in jobs]
 
 
 def _exit_with(parent: int) -> None:
@@ -211,8 +198,8 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
         kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
                            ("kernel", m.team.planner, m.radio))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
-    shared = next((job[0].point.mission for job in jobs
-                   if job[0].staircase and _may_share(job[0].point.mission)), None)
+    shared = next((t.point.mission for job in jobs for t in job
+                   if t.staircase and _may_share(t.point.mission)), None)
     order = list(kernels.values())
     return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
             *([("ranges", shared.team.planner, shared.radio)] if shared else [])]

@@ -74,6 +74,10 @@ class DistributedRule:
     the links or the range (``obs.adj``, ``obs.routed``, ``obs.spread``, ``obs.knows``,
     ``obs.rc``): a team of it flies the same at every range and is flown once for all
     of them (:mod:`sarlink.engine.ranges`); default False, the safe answer.
+    ``ignores_reporting`` declares that its hooks never read ``p.on_detect``,
+    ``p.reporters`` or ``p.stop``: a run of it whose drones report is then the same flight as
+    without reporting until a drone reports, and is taken from that run where none ever does
+    (:mod:`sarlink.engine.sharing`); default False.
     """
 
     name: str
@@ -83,6 +87,7 @@ class DistributedRule:
     near: bool = False
     readings: tuple[str, ...] = ()
     range_free: bool = False
+    ignores_reporting: bool = False
 
     def __post_init__(self) -> None:
         for hook, arity in _RULE_HOOKS.items():

@@ -11,13 +11,14 @@ _CONB_READINGS = ("conb_check", "contacts", "isolated", "conb_fallback", "takeof
 _COVB_READINGS = ("covb_direction", "takeoff")
 
 COVB = DistributedRule("covb", covb.decide, prepare=covb.prepare, near=True,
-                       readings=_COVB_READINGS, range_free=True)
+                       readings=_COVB_READINGS, range_free=True, ignores_reporting=True)
 """CovB's repulsion (Eqs. 6-8): it reads the pairs within the sensing range, never a link."""
 CONB = DistributedRule("conb", conb.decide, prepare=conb.prepare, due=conb.due,
-                       readings=_CONB_READINGS)
+                       readings=_CONB_READINGS, ignores_reporting=True)
 """ConB's attachment to the BS (Eqs. 9-11)."""
 CONCOV = DistributedRule("concov", concov.decide, prepare=concov.prepare, due=concov.due,
                          near=True,
                          readings=(*_CONB_READINGS, "covb_direction", "concov_fallback",
-                                   "concov_connected"))
+                                   "concov_connected"),
+                         ignores_reporting=True)
 """ConCov's blend of the two (Eq. 12)."""
