@@ -26,8 +26,10 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
+import pandas as pd
+
 from inprocess import InProcess
-from sarlink import execution
+from sarlink import Experiment, execution
 from sarlink.cachedir import cache_root
 from sarlink.config import DEFAULT_READING, get_reading
 from sarlink.execution import sweep_all
@@ -36,6 +38,13 @@ from sarlink.paper.figures import FIGURES
 from sarlink.paper.variants import _planner_sweeps
 from sarlink.planners import get_planner
 from sarlink.simulation import plugins_in_code
+
+
+def _timed(sweeps: list[tuple[Experiment, Path]]) -> tuple[list[pd.DataFrame], float]:
+    """The sweeps' runs, swept in one call in this process, and the CPU seconds it took."""
+    start = time.process_time()
+    frames = sweep_all(sweeps, progress=False, pool=InProcess())
+    return frames, time.process_time() - start
 
 
 def main() -> None:
@@ -48,6 +57,7 @@ def main() -> None:
     assert plugins_in_code() == ((), ())
     choices = get_reading(args.reading).choices
     rows = []  # experiment, planner, points, CPU s
+    together: dict[str, float] = {}  # planner: CPU s of its main and report swept at once
     tables: dict[str, list] = defaultdict(list)
     kernels = cache_root() / "kernels"  # the compiled kernels, but no plan of a run
     kernels.mkdir(parents=True, exist_ok=True)
@@ -58,20 +68,25 @@ def main() -> None:
         for exp in EXPERIMENTS.values():
             warm = dict(_planner_sweeps(exp, 1, choices))
             for folder, experiment in _planner_sweeps(exp, args.runs, choices):
-                points = experiment.points()
                 # kernels (the flight's and its readings'), run 0's plans: outside the timing
                 sweep_all([(warm[folder], Path(tmp) / "warm" / folder)], progress=False,
                           pool=InProcess())
-                start = time.process_time()
-                (frame,) = sweep_all([(experiment, Path(tmp) / folder)], progress=False,
-                                     pool=InProcess())
-                cpu = time.process_time() - start
-                rows.append((exp.name, experiment.mission.team.planner, len(points), cpu))
+                (frame,), cpu = _timed([(experiment, Path(tmp) / folder)])
+                planner = experiment.mission.team.planner
+                rows.append((exp.name, planner, len(experiment.points()), cpu))
                 tables[exp.name].append(frame)
-                print(f"{exp.name:10s} {experiment.mission.team.planner:18s} {len(points):4d} "
+                print(f"{exp.name:10s} {planner:18s} {len(experiment.points()):4d} "
                       f"points {cpu:7.2f} s", flush=True)
-    import pandas as pd
-
+        # as the reproduction sweeps them: each planner's main and report in one call, whose
+        # reporting runs are taken from main's runs where no drone reports (engine.sharing)
+        pairs = [dict(_planner_sweeps(EXPERIMENTS[name], args.runs, choices))
+                 for name in ("main", "report")]
+        for main_folder, report_folder in zip(*pairs, strict=True):
+            _, cpu = _timed([(pairs[0][main_folder], Path(tmp) / "together" / main_folder),
+                             (pairs[1][report_folder], Path(tmp) / "together" / report_folder)])
+            together[pairs[0][main_folder].mission.team.planner] = cpu
+            print(f"main+report {pairs[0][main_folder].mission.team.planner:18s} {cpu:7.2f} s",
+                  flush=True)
     summaries = {}
     for exp in EXPERIMENTS.values():
         summaries.update(exp.tables(pd.concat(tables[exp.name], ignore_index=True)))
@@ -117,21 +132,33 @@ def main() -> None:
               f"| planner | CPU min at {RUNS} runs | share |", "|---|---|---|"]
     for planner, cpu in sorted(by_planner.items(), key=lambda kv: -kv[1]):
         lines.append(f"| {get_planner(planner).label} | {cpu / 60:.1f} | {cpu / total:.1%} |")
-    lines += ["", f"Total: **{total / 60:.1f} CPU-minutes** of sweeps at {RUNS} runs per point "
-              f"(about {total / 120:.1f} min of wall time on 2 idle cores).", "",
+    alone = sum(r[3] for r in rows if r[0] in ("main", "report")) * scale
+    shared = total - alone + sum(together.values()) * scale
+    lines += ["", f"Total: **{total / 60:.1f} CPU-minutes** of sweeps at {RUNS} runs per point, "
+              f"each swept alone (about {total / 120:.1f} min of wall time on 2 idle cores); "
+              f"**{shared / 60:.1f}** as the reproduction sweeps them, each planner's `main` "
+              f"and `report` in one call, which takes a reporting run from `main`'s run where "
+              f"no drone reports ({alone / 60:.1f} CPU-minutes for the two swept apart, "
+              f"{sum(together.values()) * scale / 60:.1f} together: "
+              + ", ".join(f"{get_planner(p).label} {cpu * scale / 60:.1f}"
+                          for p, cpu in together.items()) + ").", "",
               "Drawing each figure from its tables (independent of the runs), CPU s: " +
               ", ".join(f"Fig. {n} {s:.2f}" for n, s in sorted(drawing.items())) + ".", ""]
-    lines += ["What sharing a prefix could save: a reporting run of `report` flies as the run of "
-              "`main` with the same seed and index until the first detection, so that part of "
-              "its flight (its share of the run's flown time: until the notification, where "
-              "the run stops, or the horizon) need not be flown twice.", "",
-              "| planner | runs | detected | flight before the first detection |",
-              "|---|---|---|---|"]
+    lines += ["The reporting runs of `report` and their prefix. A reporting run where no drone "
+              "ever reports (nothing detected, or the BS told in the step of the first "
+              "detection) is `main`'s run with the same seed and index, ended where it stops: "
+              "swept with `main` it is taken, not flown. Every other one flies as `main`'s run "
+              "until the first detection, a prefix that is still flown twice (its share of "
+              "the run's flown time: until the notification, where the run stops, or the "
+              "horizon).", "",
+              "| planner | runs | detected | taken from `main` | flight before the first "
+              "detection |", "|---|---|---|---|---|"]
     for planner, frame in pd.concat(tables["report"]).groupby("planner", sort=False):
         flown = frame["t_notify"].fillna(frame["horizon"])
         before = frame["t_detect"].fillna(frame["horizon"]).clip(upper=flown)
+        taken = frame["t_detect"].isna() | frame["immediate"]
         lines.append(f"| {get_planner(str(planner)).label} | {len(frame)} | "
-                     f"{frame['t_detect'].notna().mean():.1%} | "
+                     f"{frame['t_detect'].notna().mean():.1%} | {taken.mean():.1%} | "
                      f"{before.sum() / flown.sum():.1%} |")
     lines.append("")
     args.out.parent.mkdir(parents=True, exist_ok=True)
