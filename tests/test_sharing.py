@@ -41,7 +41,7 @@ def test_a_reporting_run_taken_from_the_run_without_is_the_run_flown(
                          p_miss=p_miss, nr=3, stop=stops[0], reading="sarlink-2")
     twin = base.replace(on_detect="report", reporters=reporters, stop=stops[1])
     pb, pt = prepare(base), prepare(twin)
-    assert sharing._base_of([pb, pt], 1) == (0 if stops[1] != "horizon" or stops[0] ==
+    assert sharing._base_of([pb, pt], 1, [0, 1]) == (0 if stops[1] != "horizon" or stops[0] ==
                                              "horizon" else None)
     for run in range(4):
         row = pb.run(7, run)
@@ -81,7 +81,8 @@ def _experiment(name: str, planner: str, **mission: object) -> Experiment:
 def test_sweeps_with_and_without_reporting_share_their_runs(
         planner: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The paper's ``main`` and ``report``, swept together: one job per chunk and team (mTSP's
-    ranges too), the same rows as swept apart, and fewer reporting runs flown."""
+    ranges too), the same rows as swept apart, and fewer reporting runs flown; a folder
+    swept twice in one call gets the same rows."""
     main = _experiment("main", planner)
     report = _experiment("report", planner, team={"on_detect": "report"},
                          timing={"stop": "notified"})
@@ -98,14 +99,17 @@ def test_sweeps_with_and_without_reporting_share_their_runs(
         return original(self, *args, **kwargs)  # type: ignore[arg-type]
 
     monkeypatch.setattr(sharing.Prepared, "run", counted)
-    together = sweep_all([(main, tmp_path / "main"), (report, tmp_path / "report")],
-                         workers=1, progress=False)
+    *together, again = sweep_all([(main, tmp_path / "main"), (report, tmp_path / "report"),
+                                  (main, tmp_path / "main-again")], workers=1, progress=False)
     reporting = flown.count("report")
+    if planner == "conb":  # flown per range, once for the two folders of main
+        assert flown.count("continue") == 6 * 2
     monkeypatch.setattr(sharing.Prepared, "run", original)
     apart = [sweep(main, tmp_path / "main-apart", workers=1, progress=False),
              sweep(report, tmp_path / "report-apart", workers=1, progress=False)]
     for a, b in zip(together, apart, strict=True):
         pd.testing.assert_frame_equal(a, b)
+    pd.testing.assert_frame_equal(again, apart[0])  # the same mission twice: flown once
     assert reporting < 12 if planner == "conb" else reporting <= 12
 
 
@@ -116,11 +120,11 @@ def test_a_rule_that_reads_on_detect_is_flown(monkeypatch: pytest.MonkeyPatch) -
     register_planner(HOMEBOUND)
     base = Mission.build(planner="homebound", drones=3, rc=200.0, horizon=600.0)
     pb, pt = prepare(base), prepare(base.replace(on_detect="report", stop="notified"))
-    assert sharing._base_of([pb, pt], 1) is None
+    assert sharing._base_of([pb, pt], 1, [0, 1]) is None
     rule = pt.steering.rule
     assert rule is not None
     lying = replace(pt, steering=replace(pt.steering, rule=replace(rule, ignores_reporting=True)))
-    assert sharing._base_of([pb, lying], 1) == 0
+    assert sharing._base_of([pb, lying], 1, [0, 1]) == 0
     rows = [(sharing.reporting_twin(pb.run(1, k), pb, lying), pt.run(1, k)) for k in range(3)]
     assert any(taken is not None and not
                (taken.connected_cum == flown.connected_cum).all() for taken, flown in rows)

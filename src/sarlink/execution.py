@@ -119,8 +119,11 @@ def _jobs(tasks: Sequence[_Task]) -> list[_Job]:
     flights (:func:`_flight`) together, in the order of their first task."""
     groups: dict[tuple[Any, ...], list[_Task]] = {}
     jobs: list[_Job | None] = []
+    flights: dict[str, str] = {}  # by point: a point's tasks have one mission
     for task in tasks:
-        key = (task.store.seed, task.runs.start, task.runs.stop, _flight(task.point.mission))
+        if task.point.hash not in flights:
+            flights[task.point.hash] = _flight(task.point.mission)
+        key = (task.store.seed, task.runs.start, task.runs.stop, flights[task.point.hash])
         if key not in groups:
             groups[key] = []
             jobs.append(None)  # a placeholder, keeping the order of the tasks

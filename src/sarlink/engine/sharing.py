@@ -40,7 +40,8 @@ def fly(prepared: Sequence[Prepared], staircase: Sequence[bool], seed: int,
     same: dict[tuple[str, bool], int] = {}  # the same mission twice (two folders): flown once
     copies = {i: same.setdefault((p.mission.model_dump_json(), staircase[i]), i)
               for i, p in enumerate(prepared)}
-    bases = {i: _base_of(prepared, i) for i in copies if copies[i] == i}
+    kept = [i for i in copies if copies[i] == i]
+    bases = {i: _base_of(prepared, i, kept) for i in kept}
     flown = [i for i, b in bases.items() if b is None]
     for group in _range_groups([prepared[i] for i in flown], [staircase[i] for i in flown]):
         idx = [flown[g] for g in group]
@@ -80,13 +81,15 @@ def _range_groups(prepared: Sequence[Prepared], staircase: Sequence[bool]) -> li
     return groups
 
 
-def _base_of(prepared: Sequence[Prepared], i: int) -> int | None:
-    """The mission of ``prepared`` whose runs mission ``i``'s reporting runs may be taken from:
-    the same mission with ``on_detect = continue``, ending no earlier (``stop``)."""
+def _base_of(prepared: Sequence[Prepared], i: int, among: Sequence[int]) -> int | None:
+    """The mission of ``prepared`` (one of ``among``) whose runs mission ``i``'s reporting
+    runs may be taken from: the same mission with ``on_detect = continue``, ending no earlier
+    (``stop``)."""
     twin = prepared[i]
     if twin.params.on_detect != REPORT or not _ignores_reporting(twin):
         return None
-    for j, base in enumerate(prepared):
+    for j in among:
+        base = prepared[j]
         m = base.mission
         if (base.params.on_detect == CONTINUE
                 and (twin.params.stop != HORIZON or base.params.stop == HORIZON)
