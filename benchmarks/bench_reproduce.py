@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import datetime
+import os
 import platform
 import tempfile
 import time
@@ -79,11 +80,20 @@ def main() -> None:
                       f"points {cpu:7.2f} s", flush=True)
         # as the reproduction sweeps them: each planner's main and report in one call, whose
         # reporting runs are taken from main's runs where no drone reports (engine.sharing)
+        # (in a plan cache of their own: the plans of each run are solved again)
         pairs = [dict(_planner_sweeps(EXPERIMENTS[name], args.runs, choices))
                  for name in ("main", "report")]
+        warm = [dict(_planner_sweeps(EXPERIMENTS[name], 1, choices)) for name in ("main", "report")]
+        again = Path(tmp) / "together"
+        (again / "cache").mkdir(parents=True)
+        (again / "cache" / "kernels").symlink_to(kernels)
+        os.environ["SARLINK_CACHE_DIR"] = str(again / "cache")
         for main_folder, report_folder in zip(*pairs, strict=True):
-            _, cpu = _timed([(pairs[0][main_folder], Path(tmp) / "together" / main_folder),
-                             (pairs[1][report_folder], Path(tmp) / "together" / report_folder)])
+            sweep_all([(warm[0][main_folder], again / "warm" / main_folder),
+                       (warm[1][report_folder], again / "warm" / report_folder)],
+                      progress=False, pool=InProcess())
+            _, cpu = _timed([(pairs[0][main_folder], again / main_folder),
+                             (pairs[1][report_folder], again / report_folder)])
             together[pairs[0][main_folder].mission.team.planner] = cpu
             print(f"main+report {pairs[0][main_folder].mission.team.planner:18s} {cpu:7.2f} s",
                   flush=True)
