@@ -452,14 +452,16 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     toggled = False
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
+        lo_a, hi_a = lo[a], hi[a]
         for w in range(rd.adj.shape[2]):
             first = w * 64
             close = np.uint64(0)
             left = np.uint64(0)  # the links that left their band
             for b in range(first, min(mp, first + 64)):
-                dd = d2(xa, ya, za, px[b], py[b], pz[b])
+                u = np.uint64(b)  # unsigned: the loop vectorizes (graph.links)
+                dd = d2(xa, ya, za, px[u], py[u], pz[u])
                 shift = np.uint64(b - first)
-                left |= (_ONE if (dd <= lo[a, b]) | (dd > hi[a, b]) else _ZERO) << shift
+                left |= (_ONE if (dd <= lo_a[u]) | (dd > hi_a[u]) else _ZERO) << shift
                 if with_near:
                     close |= (_ONE if dd <= r2 else _ZERO) << shift
             if with_near:

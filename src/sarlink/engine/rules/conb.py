@@ -122,11 +122,13 @@ def predict_routes(
         a = w * 64 + lowest(pending)
         add(expanded, a)
         xa, ya, za = qx[a], qy[a], pz[a]
+        disc2_a = disc2[a]
         for v in range(nw):
             lo = v * 64
             row = np.uint64(0)
             for b in range(lo, min(mp, lo + 64)):
-                row |= (_ONE if d2(xa, ya, za, qx[b], qy[b], pz[b]) <= disc2[a, b]
+                u = np.uint64(b)  # unsigned: the loop vectorizes (graph.links)
+                row |= (_ONE if d2(xa, ya, za, qx[u], qy[u], pz[u]) <= disc2_a[u]
                         else _ZERO) << np.uint64(b - lo)
             out[v] |= row
         w = 0  # the new nodes may lie in any word
