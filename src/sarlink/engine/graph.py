@@ -86,8 +86,9 @@ def links(
     several times faster than testing each pair once and mirroring the bit. The positions
     are padded (see :data:`sarlink.engine.geometry.FAR`): a row's length is the padded one.
     The inner loop indexes with an unsigned integer: with a signed one Numba adds a check for
-    a negative index (counted from the end) to every load, which kept LLVM from vectorizing
-    the loop (4x slower at N = 22; the same loads and arithmetic, so the same bits).
+    a negative index (counted from the end) to every load, which by the timings kept LLVM
+    from vectorizing the loop (docs/architecture.md); the same loads and arithmetic, so the
+    same bits.
     """
     m = adj.shape[0]
     mp = px.shape[0]
