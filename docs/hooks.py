@@ -1,9 +1,11 @@
 """MkDocs hooks for the documentation site (mkdocs.yml): the README as the home page, the
-benchmark tables the pages link to, and links that stay valid under ``mkdocs build --strict``.
+changelog and benchmark tables the pages link to, and links that stay valid under
+``mkdocs build --strict``.
 
 Pages are written to be read on the repository too, so their links are repository paths: the
 README links ``docs/model.md``, ``docs/architecture.md`` links ``../benchmarks/results/...``.
-The site holds ``docs/`` at its root and the README and ``benchmarks/results/*.md`` beside it;
+The site holds ``docs/`` at its root and the README, ``CHANGELOG.md`` and
+``benchmarks/results/*.md`` beside it;
 each link is rewritten from the repository's layout to the site's. Generated reports under
 ``docs/results/`` link files that are not committed beside every copy (the replay page); such
 a link is shown as its text.
@@ -21,10 +23,11 @@ from mkdocs.structure.pages import Page
 
 ROOT = Path(__file__).resolve().parent.parent
 """The repository."""
-EXTRA = ("README.md", *(f"benchmarks/results/{p.name}"
-                        for p in sorted((ROOT / "benchmarks/results").glob("*.md"))))
-"""Repository files outside docs/ that the site renders: the README (as the home page) and
-the benchmark tables the pages link to."""
+EXTRA = ("README.md", "CHANGELOG.md",
+         *(f"benchmarks/results/{p.name}"
+           for p in sorted((ROOT / "benchmarks/results").glob("*.md"))))
+"""Repository files outside docs/ that the site renders: the README (as the home page), the
+changelog and the benchmark tables the pages link to."""
 
 _LINK = re.compile(r"(!?)\[([^\]]*)\]\(([^()\s]+)\)")
 
@@ -38,8 +41,9 @@ def _site_path(repo_path: str) -> str:
 
 def _repo_path(page: File) -> str:
     """Where a page's source is in the repository."""
-    return "README.md" if page.src_uri == "index.md" else (
-        page.src_uri if page.src_uri.startswith("benchmarks/") else f"docs/{page.src_uri}")
+    if page.src_uri == "index.md":
+        return "README.md"
+    return page.src_uri if page.src_uri in EXTRA else f"docs/{page.src_uri}"
 
 
 def on_files(files: Files, config: Any) -> Files:
