@@ -15,14 +15,12 @@ runs flown by ``simulate`` (CovB's decisions inside the kernel). Run with
 from __future__ import annotations
 
 import argparse
-import platform
-import sys
 import time
-from datetime import date
 from pathlib import Path
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, simulate
 from sarlink.env import BatchEnv, env, parallel_env
 
@@ -85,9 +83,6 @@ def main() -> None:
         rows.append(f"| {name} | {steps:,} | {seconds:.2f} | {steps / seconds / 1e3:.1f} |")
         print(rows[-1], flush=True)
     text = "\n".join([
-        f"Environment benchmark: `python benchmarks/bench_env.py --runs {args.runs}` on "
-        f"{platform.machine()}, Python {sys.version.split()[0]}, {date.today()}.",
-        "",
         "Random continuous actions (NumPy draws), 10 drones, r_c = 500 m, runs 0.. of seed 0 "
         "until "
         "notification or the 4000 s horizon; one process, CPU time.",
@@ -101,7 +96,7 @@ def main() -> None:
         ""])
     print(text)
     if args.out:
-        args.out.write_text(text)
+        results_file.write(args.out, "Environment benchmark", text)
 
 
 if __name__ == "__main__":

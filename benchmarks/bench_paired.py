@@ -39,6 +39,7 @@ from typing import Any
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, prepare
 from sarlink.config.readings import EARLIER_CHOICES
 from sarlink.engine.build import kernel_for
@@ -185,6 +186,7 @@ def main() -> None:
     parser.add_argument("--ranges", default="",
                         help="comma-separated ranges (m): fly each case read at them (a "
                              "range-free team) instead of recorded")
+    parser.add_argument("--out", type=Path, help="write the results here (markdown)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
     read_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
@@ -192,6 +194,7 @@ def main() -> None:
         measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
                 args.reading, read_at)
         return
+    lines = []
     for case in args.cases.split(","):
         results = {}
         for order in ("old-first", "new-first"):
@@ -204,9 +207,17 @@ def main() -> None:
             results[order] = (int(same), float(ratio))
         same = min(s for s, _ in results.values())
         speedup = math.sqrt(results["old-first"][1] * results["new-first"][1])
-        print(f"{case:16s} identical {same}/{args.runs}  speed-up {speedup:.3f} (paired "
-              f"medians: old compiled first {results['old-first'][1]:.3f}, new first "
-              f"{results['new-first'][1]:.3f})", flush=True)
+        lines.append(f"{case:16s} identical {same}/{args.runs}  speed-up {speedup:.3f} "
+                     f"(paired medians: old compiled first {results['old-first'][1]:.3f}, "
+                     f"new first {results['new-first'][1]:.3f})")
+        print(lines[-1], flush=True)
+    if args.out:
+        results_file.write(args.out, f"Paired timing: this tree against {args.rev}", "\n".join([
+            f"Reading {args.reading}, seed 1, runs 0-{args.runs - 1}, {args.rounds} rounds"
+            + (f", range-free flights scanned at {args.ranges} m" if read_at else "")
+            + ". Speed-up = old time / new time, the geometric mean of the medians of the "
+            "paired ratios in the two compile orders; identical = runs whose every output is "
+            "bit for bit the same.", "", "```", *lines, "```"]))
 
 
 if __name__ == "__main__":

@@ -16,10 +16,8 @@ Run with
 from __future__ import annotations
 
 import argparse
-import datetime
 import math
 import operator
-import platform
 import statistics
 import tempfile
 import time
@@ -29,6 +27,7 @@ from typing import Any
 
 import pandas as pd
 
+import results_file
 from inprocess import InProcess
 from sarlink import Experiment, Mission, prepare, storage
 from sarlink.engine import Prepared
@@ -141,12 +140,8 @@ def main() -> None:
         parts = {n: split_sweep(rcs, args.runs, middle, root / f"split{n}")
                  for n, rcs in ((1, [1000.0]), (len(RANGES), RANGES))}
     lines = [
-        "# One flight, every range: CPU of a sweep over 8 ranges against one",
-        "",
-        f"`python benchmarks/bench_ranges.py --runs {args.runs} --drones "
-        f"{' '.join(map(str, args.drones))}`, {datetime.date.today()}, "
-        f"{platform.processor() or platform.machine()}, the sweeps' jobs run in the "
-        "benchmark's process: CPU time of the whole sweep (flights, tables, files), without "
+        "The sweeps' jobs run in the benchmark's process: CPU time of the whole sweep "
+        "(flights, tables, files), without "
         f"a worker's start-up; the best of {ROUNDS} rounds, the two sweeps interleaved, each "
         "first in every other round (and the median of the ratios of the two sweeps of each "
         "round, taken a few seconds apart).",
@@ -175,16 +170,16 @@ def main() -> None:
         f"The engine alone, CPU ms per run (mean of {min(args.runs, 50)} runs, the best of "
         "three rounds):",
         "",
-        "| N | plain flight (`Prepared.run`) | read at 1 range (`Prepared.run_ranges`) | "
-        "read at 8 ranges | traced, read at 8 ranges with the staircase |",
+        "| N | plain flight (`Prepared.run`) | scanned at 1 range (`Prepared.run_ranges`) | "
+        "scanned at 8 ranges | traced, scanned at 8 ranges with the staircase |",
         "|---|---|---|---|---|",
         *(f"| {n} | {' | '.join(f'{t:.2f}' for t in f['engine'])} |"
           for n, f in found.items()),
         "",
     ]
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text("\n".join(lines))
     print("\n".join(lines))
+    results_file.write(args.out, "One flight, every range: CPU of a sweep over 8 ranges "
+                       "against one", "\n".join(lines))
 
 
 if __name__ == "__main__":
