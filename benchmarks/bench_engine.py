@@ -4,7 +4,7 @@ Full 4000 s runs of the paper's setting, r_c = 1000 m, one process, CPU time. Ru
 
     python benchmarks/bench_engine.py --out benchmarks/results/engine.md
 
-Targets (issue 2): CovB >= 15 M and ConB >= 8 M drone-steps/s/core at N = 22; >= 200x the
+Targets: CovB >= 15 M and ConB >= 8 M drone-steps/s/core at N = 22; >= 200x the
 reference. The reference is timed on a few runs; the engine on the same runs and more.
 """
 

@@ -5,10 +5,10 @@ The paper's grid (64 cells of 500 m, BS at the centre), minimum cells floor(64 /
 
     python benchmarks/bench_mtsp.py --seeds 5 --busy --out benchmarks/results/mtsp.md
 
-Targets: the GA's 80 x 5000 on 64 cells in about a second after compilation (issue 3); the
-strong solver's (``ortools``) min-max plans within 1 % of the best known longest tour for every
-N from 2 to 22 (issue 16), within a budget of steps that takes at most 3 s per plan on 2 cores,
-and the same plan whatever the load (issue 26: ``--busy`` solves seed 0 again with a process
+Targets: the GA's 80 x 5000 on 64 cells in about a second after compilation; the strong
+solver's (``ortools``) min-max plans within 1 % of the best known longest tour for every N from
+2 to 22, within a budget of steps that takes at most 3 s per plan on 2 cores, and the same plan
+whatever the load (``--busy`` solves seed 0 again with a process
 spinning on every other core and compares the tours). The best known is the shortest longest
 tour of :data:`BEST_KNOWN` and of every plan this script makes, never below the floor: twice
 the distance from the BS to the farthest cell centre.

@@ -15,9 +15,9 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 
 ``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
 as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
-``--ranges 250,500,...`` times range-free flights read at those ranges as they fly (a sweep
-over ``rc``, :mod:`sarlink.engine.ranges`) instead of recorded flights, and compares every
-range's records. Both revisions must have ``Prepared.record(streams, scenario,
+``--ranges 250,500,...`` times range-free flights scanned at those ranges as they fly (a
+sweep over ``rc``, :mod:`sarlink.engine.critical_ranges`) instead of recorded flights, and
+compares every range's records. Both revisions must have ``Prepared.record(streams, scenario,
 trajectory=..., read_at=...)``.
 """
 
@@ -77,7 +77,7 @@ class Side:
 
     def run_once(self, case: str, reading: str, seed: int, run: int,
                  read_at: tuple[float, ...] = ()) -> tuple[float, Any]:
-        """Fly run ``run``: recorded, or read at the ranges ``read_at`` if any."""
+        """Fly run ``run``: recorded, or scanned at the ranges ``read_at`` if any."""
         prepared = self.prepare_of(self.mission_of(case, reading))
         how: dict[str, Any] = {"read_at": read_at} if read_at else {"trajectory": True}
         streams = run_streams(seed, run)
@@ -184,7 +184,7 @@ def main() -> None:
                         help="the reading of the paper to fly (default: sarlink-1, the rules "
                              "of kernels before readings were selectable)")
     parser.add_argument("--ranges", default="",
-                        help="comma-separated ranges (m): fly each case read at them (a "
+                        help="comma-separated ranges (m): fly each case scanned at them (a "
                              "range-free team) instead of recorded")
     parser.add_argument("--out", type=Path, help="write the results here (markdown)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)

@@ -1,13 +1,13 @@
-"""CPU of a sweep over 8 communication ranges against a sweep over one (issue 22).
+"""CPU of a sweep over 8 communication ranges against a sweep over one.
 
 A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
-read at each range as it flies (:mod:`sarlink.engine.ranges`); a sweep over one range flies
-as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
+scanned at each range as it flies (:mod:`sarlink.engine.critical_ranges`); a sweep over one
+range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
 sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
 default chunk) but its jobs run in this process, so that the CPU time is that of the work,
 without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
-are equal. It also times the engine alone per run: a plain flight, a flight read at one
-range and at 8, and a traced flight read at 8 with the staircase.
+are equal. It also times the engine alone per run: a plain flight, a flight scanned at one
+range and at 8, and a traced flight scanned at 8 with the staircase.
 Run with
 
     python benchmarks/bench_ranges.py --runs 400 --out benchmarks/results/ranges.md
@@ -87,7 +87,7 @@ def split_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> dict[
 
 
 def engine_ms(drones: int, runs: int) -> list[float]:
-    """CPU ms per run: a flight, read at one range, at 8 ranges, and at 8 ranges with the
+    """CPU ms per run: a flight, scanned at one range, at 8 ranges, and at 8 ranges with the
     staircase (the best of three rounds, interleaved)."""
     prepared = prepare(Mission.build(planner="covb", drones=drones, rc=1000.0))
     works = [lambda k: prepared.run(0, k),

@@ -15,7 +15,7 @@ the sweep layer adds. Comparing with the kernel on as many cores (not with one c
 
     python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
-Targets (issue 4): overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. Other programs
+Targets: overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. Other programs
 on the machine, and a virtual machine's neighbours, slow phases down unevenly. So the phases
 run ``--repeats`` times, interleaved, and the fastest of each counts; the report gives, per
 phase, the CPU time the rest of the machine used meanwhile (from /proc/stat, Linux) and the
