@@ -2,12 +2,12 @@
 
 A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
 scanned at each range as it flies (:mod:`sarlink.engine.critical_ranges`); a sweep over one
-range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
-sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
-default chunk) but its jobs run in this process, so that the CPU time is that of the work,
-without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
-are equal. It also times the engine alone per run: a plain flight, a flight scanned at one
-range and at 8, and a traced flight scanned at 8 with the staircase.
+range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the
+paper's team sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the
+experiment's default chunk) but its jobs run in this process, so that the CPU time is that of
+the work, without a worker's start-up; it also sweeps the 8 ranges one by one and checks that
+the rows are equal. It also times the engine alone per run: a plain flight, a flight scanned
+at one range and at 8, and a traced flight scanned at 8 with the staircase.
 Run with
 
     python benchmarks/bench_ranges.py --runs 400 --out benchmarks/results/ranges.md
