@@ -12,13 +12,12 @@ under each. Writes ``benchmarks/results/conb-check.md``. Run with
 from __future__ import annotations
 
 import argparse
-import datetime
-import platform
 import time
 from pathlib import Path
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, prepare
 from sarlink.engine.run import Prepared
 from sarlink.engine.scenario import draw_scenario
@@ -75,11 +74,9 @@ def main() -> None:
         cont, period, ratio = measure(case, args.reading, args.runs, args.rounds)
         lines.append(f"| {case} | {cont:.2f} | {period:.2f} | {ratio:.2f} |")
         print(lines[-1], flush=True)
-    RESULTS.write_text(
-        "# ConB's check at every increment against the check once per period\n\n"
-        f"`python benchmarks/bench_conb_check.py --cases {args.cases} --reading {args.reading} "
-        f"--runs {args.runs} --rounds {args.rounds}`, {datetime.date.today()}, "
-        f"{platform.machine()}: CPU time of the kernel per 4000 s run (seed 1, runs "
+    results_file.write(
+        RESULTS, "ConB's check at every increment against the check once per period",
+        f"CPU time of the kernel per 4000 s run under {args.reading} (seed 1, runs "
         f"0-{args.runs - 1}, medians over {args.rounds} rounds), both checks in one process, "
         "pair by pair; the last column is the median of the paired ratios.\n\n"
         + "\n".join(lines) + "\n")

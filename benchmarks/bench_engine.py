@@ -4,14 +4,13 @@ Full 4000 s runs of the paper's setting, r_c = 1000 m, one process, CPU time. Ru
 
     python benchmarks/bench_engine.py --out benchmarks/results/engine.md
 
-Targets (issue 2): CovB >= 15 M and ConB >= 8 M drone-steps/s/core at N = 22; >= 200x the
+Targets: CovB >= 15 M and ConB >= 8 M drone-steps/s/core at N = 22; >= 200x the
 reference. The reference is timed on a few runs; the engine on the same runs and more.
 """
 
 from __future__ import annotations
 
 import argparse
-import platform
 import sys
 import time
 from collections.abc import Callable
@@ -20,6 +19,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
+import results_file
 from naive import simulate_naive
 from sarlink import Mission, prepare
 
@@ -57,18 +57,13 @@ def main() -> None:
                   f"speed-up {rows[-1][5]:.0f}x", flush=True)
 
     lines = [
-        f"Engine benchmark: `python benchmarks/bench_engine.py --runs {args.runs}` on "
-        f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
-        f"{time.strftime('%Y-%m-%d')}.",
-        "",
         "| planner | N | M drone-steps/s/core | ms per 4000 s run | reference s/run | speed-up |",
         "|---|---|---|---|---|---|",
         *(f"| {p} | {n} | {rate:.2f} | {ms:.2f} | {slow:.2f} | {up:.0f}x |"
           for p, n, rate, ms, slow, up in rows),
     ]
     if args.out:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text("\n".join(lines) + "\n")
+        results_file.write(args.out, "Engine benchmark", "\n".join(lines))
 
 
 if __name__ == "__main__":

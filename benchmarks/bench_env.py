@@ -15,21 +15,20 @@ runs flown by ``simulate`` (CovB's decisions inside the kernel). Run with
 from __future__ import annotations
 
 import argparse
-import platform
-import sys
 import time
-from datetime import date
 from pathlib import Path
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, simulate
 from sarlink.env import BatchEnv, env, parallel_env
 
 
 def parallel(mission: Mission, runs: int) -> tuple[int, float]:
     e = parallel_env(mission)
-    e.reset(seed=0)  # compiles (or loads) the kernel
+    e.reset(seed=0)  # compiles (or loads) the kernels, outside the timing
+    e.step({agent: np.zeros(2) for agent in e.agents})
     rng = np.random.default_rng(0)
     agent_steps, start = 0, time.process_time()
     for run in range(runs):
@@ -42,6 +41,8 @@ def parallel(mission: Mission, runs: int) -> tuple[int, float]:
 
 def aec(mission: Mission, runs: int) -> tuple[int, float]:
     e = env(mission)
+    e.reset(seed=0)  # compiles (or loads) the kernels, outside the timing
+    e.step(np.zeros(2))
     rng = np.random.default_rng(0)
     agent_steps, start = 0, time.process_time()
     for run in range(runs):
@@ -56,6 +57,8 @@ def aec(mission: Mission, runs: int) -> tuple[int, float]:
 def batched(mission: Mission, runs: int, batch: int = 16) -> tuple[int, float]:
     batch = min(batch, runs)
     b = BatchEnv(mission, batch=batch)
+    b.reset(seed=0)  # compiles (or loads) the kernels, outside the timing
+    b.step(np.zeros((batch, b.drones, 2)))
     rng = np.random.default_rng(0)
     agent_steps, start = 0, time.process_time()
     for first in range(0, runs, batch):
@@ -85,9 +88,6 @@ def main() -> None:
         rows.append(f"| {name} | {steps:,} | {seconds:.2f} | {steps / seconds / 1e3:.1f} |")
         print(rows[-1], flush=True)
     text = "\n".join([
-        f"Environment benchmark: `python benchmarks/bench_env.py --runs {args.runs}` on "
-        f"{platform.machine()}, Python {sys.version.split()[0]}, {date.today()}.",
-        "",
         "Random continuous actions (NumPy draws), 10 drones, r_c = 500 m, runs 0.. of seed 0 "
         "until "
         "notification or the 4000 s horizon; one process, CPU time.",
@@ -101,7 +101,7 @@ def main() -> None:
         ""])
     print(text)
     if args.out:
-        args.out.write_text(text)
+        results_file.write(args.out, "Environment benchmark", text)
 
 
 if __name__ == "__main__":

@@ -12,10 +12,10 @@ Run with
 from __future__ import annotations
 
 import argparse
-import platform
 import time
 from pathlib import Path
 
+import results_file
 from sarlink import Mission, prepare
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -47,16 +47,14 @@ def main() -> None:
         print(f"{planner:10s} N={drones:2d}: square {square:6.2f} ms/run, valley "
               f"{valley:6.2f} ms/run ({valley / square:.2f}x)", flush=True)
     lines = [
-        f"Polygon areas: `python benchmarks/bench_missions.py --runs {args.runs}` on "
-        f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
-        f"{time.strftime('%Y-%m-%d')} (CPU time, one process; t_d = 1800 s, r_c = 1000 m)",
+        "CPU time, one process; t_d = 1800 s, r_c = 1000 m.",
         "",
         "| planner | N | square, ms per run | valley, ms per run | ratio |",
         "|---|---|---|---|---|",
         *(f"| {p} | {n} | {s:.2f} | {v:.2f} | {v / s:.2f} |" for p, n, s, v in rows),
     ]
     if args.out is not None:
-        args.out.write_text("\n".join(lines) + "\n")
+        results_file.write(args.out, "Polygon areas", "\n".join(lines))
 
 
 if __name__ == "__main__":

@@ -5,10 +5,10 @@ The paper's grid (64 cells of 500 m, BS at the centre), minimum cells floor(64 /
 
     python benchmarks/bench_mtsp.py --seeds 5 --busy --out benchmarks/results/mtsp.md
 
-Targets: the GA's 80 x 5000 on 64 cells in about a second after compilation (issue 3); the
-strong solver's (``ortools``) min-max plans within 1 % of the best known longest tour for every
-N from 2 to 22 (issue 16), within a budget of steps that takes at most 3 s per plan on 2 cores,
-and the same plan whatever the load (issue 26: ``--busy`` solves seed 0 again with a process
+Targets: the GA's 80 x 5000 on 64 cells in about a second after compilation; the strong
+solver's (``ortools``) min-max plans within 1 % of the best known longest tour for every N from
+2 to 22, within a budget of steps that takes at most 3 s per plan on 2 cores, and the same plan
+whatever the load (``--busy`` solves seed 0 again with a process
 spinning on every other core and compares the tours). The best known is the shortest longest
 tour of :data:`BEST_KNOWN` and of every plan this script makes, never below the floor: twice
 the distance from the BS to the farthest cell centre.
@@ -19,7 +19,6 @@ from __future__ import annotations
 import argparse
 import multiprocessing
 import os
-import platform
 import statistics
 import time
 from collections.abc import Iterator
@@ -28,6 +27,7 @@ from importlib.metadata import version
 from pathlib import Path
 from typing import Any
 
+import results_file
 from sarlink.mtsp import ORTOOLS_SOLUTIONS, RUIN_ITERATIONS, MtspPlan, grid_cells, solve
 from sarlink.mtsp.plan import distance_matrix
 
@@ -159,14 +159,10 @@ def main() -> None:
     if differ:
         print("tours differ under load for N = " + ", ".join(differ))
 
-    budget = "" if args.budget is None else f" --budget {args.budget}"
     minsum = f"{args.budget or ORTOOLS_SOLUTIONS:,} solutions"
     minmax = f"3 x {args.budget or RUIN_ITERATIONS:,} steps"
     text = "\n".join([
-        f"mTSP benchmark: `python benchmarks/bench_mtsp.py{budget} --seeds {args.seeds}"
-        f"{' --busy' if args.busy else ''}` on {platform.processor() or platform.machine()} "
-        f"({os.cpu_count()} cores, shared with other work), Python "
-        f"{platform.python_version()}, numba {version('numba')}, ortools {version('ortools')}.",
+        f"numba {version('numba')}, ortools {version('ortools')}.",
         "",
         speed,
         "",
@@ -192,11 +188,10 @@ def main() -> None:
         "",
     ])
     if args.out is not None:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
         old = args.out.read_text() if args.out.exists() else ""
         kept = old.find(LONG_RUNS)  # the record of the long runs is not made by this script
-        args.out.write_text(text + ("\n" + old[kept:] if kept >= 0 else ""))
-        print(f"written to {args.out}")
+        results_file.write(args.out, "mTSP benchmark",
+                           text + ("\n" + old[kept:] if kept >= 0 else ""))
 
 
 if __name__ == "__main__":

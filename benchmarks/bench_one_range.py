@@ -1,6 +1,6 @@
 """CPU of a one-range CovB sweep (N = 10, 300 runs), its jobs in this process: run it in two
-checkouts to compare them (issue 22: a one-range sweep must cost what it cost before the
-critical ranges). Usage, from each checkout's root with its own environment:
+checkouts to compare them (a one-range sweep must cost what it cost before the range scan
+existed). Usage, from each checkout's root with its own environment:
 
     .venv/bin/python benchmarks/bench_one_range.py LABEL
 

@@ -15,9 +15,9 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 
 ``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
 as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
-``--ranges 250,500,...`` times range-free flights read at those ranges as they fly (a sweep
-over ``rc``, :mod:`sarlink.engine.ranges`) instead of recorded flights, and compares every
-range's records. Both revisions must have ``Prepared.record(streams, scenario,
+``--ranges 250,500,...`` times range-free flights scanned at those ranges as they fly (a
+sweep over ``rc``, :mod:`sarlink.engine.critical_ranges`) instead of recorded flights, and
+compares every range's records. Both revisions must have ``Prepared.record(streams, scenario,
 trajectory=..., read_at=...)``.
 """
 
@@ -39,6 +39,7 @@ from typing import Any
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, prepare
 from sarlink.config.readings import EARLIER_CHOICES
 from sarlink.engine.build import kernel_for
@@ -76,7 +77,7 @@ class Side:
 
     def run_once(self, case: str, reading: str, seed: int, run: int,
                  read_at: tuple[float, ...] = ()) -> tuple[float, Any]:
-        """Fly run ``run``: recorded, or read at the ranges ``read_at`` if any."""
+        """Fly run ``run``: recorded, or scanned at the ranges ``read_at`` if any."""
         prepared = self.prepare_of(self.mission_of(case, reading))
         how: dict[str, Any] = {"read_at": read_at} if read_at else {"trajectory": True}
         streams = run_streams(seed, run)
@@ -183,8 +184,9 @@ def main() -> None:
                         help="the reading of the paper to fly (default: sarlink-1, the rules "
                              "of kernels before readings were selectable)")
     parser.add_argument("--ranges", default="",
-                        help="comma-separated ranges (m): fly each case read at them (a "
+                        help="comma-separated ranges (m): fly each case scanned at them (a "
                              "range-free team) instead of recorded")
+    parser.add_argument("--out", type=Path, help="write the results here (markdown)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
     read_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
@@ -192,6 +194,7 @@ def main() -> None:
         measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
                 args.reading, read_at)
         return
+    lines = []
     for case in args.cases.split(","):
         results = {}
         for order in ("old-first", "new-first"):
@@ -204,9 +207,17 @@ def main() -> None:
             results[order] = (int(same), float(ratio))
         same = min(s for s, _ in results.values())
         speedup = math.sqrt(results["old-first"][1] * results["new-first"][1])
-        print(f"{case:16s} identical {same}/{args.runs}  speed-up {speedup:.3f} (paired "
-              f"medians: old compiled first {results['old-first'][1]:.3f}, new first "
-              f"{results['new-first'][1]:.3f})", flush=True)
+        lines.append(f"{case:16s} identical {same}/{args.runs}  speed-up {speedup:.3f} "
+                     f"(paired medians: old compiled first {results['old-first'][1]:.3f}, "
+                     f"new first {results['new-first'][1]:.3f})")
+        print(lines[-1], flush=True)
+    if args.out:
+        results_file.write(args.out, f"Paired timing: this tree against {args.rev}", "\n".join([
+            f"Reading {args.reading}, seed 1, runs 0-{args.runs - 1}, {args.rounds} rounds"
+            + (f", range-free flights scanned at {args.ranges} m" if read_at else "")
+            + ". Speed-up = old time / new time, the geometric mean of the medians of the "
+            "paired ratios in the two compile orders; identical = runs whose every output is "
+            "bit for bit the same.", "", "```", *lines, "```"]))
 
 
 if __name__ == "__main__":

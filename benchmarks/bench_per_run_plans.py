@@ -25,19 +25,18 @@ import importlib
 import json
 import math
 import os
-import platform
 import subprocess
 import sys
 import tempfile
 import time
 from dataclasses import replace
-from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from bench_paired import ROOT, load_revision
+import results_file
+from bench_paired import load_revision
 from sarlink.engine.streams import plan_seed
 from sarlink.mtsp import grid_cells
 from sarlink.mtsp.plan import distance_matrix
@@ -169,8 +168,6 @@ def main() -> None:
         print(json.dumps(measure(args.rev, int(args.drones), args.runs, args.rounds,
                                  args.one == "new-first")))
         return
-    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, check=True,
-                          capture_output=True, text=True).stdout.strip()
     load_before = os.getloadavg()
     rows = []
     for drones in (int(n) for n in args.drones.split(",")):
@@ -190,13 +187,8 @@ def main() -> None:
                         f"{s['new_cpu']:.1f} | {s['speedup_cpu']:.2f} |")
             print(rows[-1], flush=True)
     synced, unsynced = write_costs(4 * args.runs * args.rounds)
-    load_after = os.getloadavg()
-    command = " ".join(["python benchmarks/bench_per_run_plans.py", *sys.argv[1:]])
     text = "\n".join([
-        f"# A run's own mTSP plan: working tree ({head}) against {args.rev}", "",
-        f"`{command}` on {platform.machine()}, {os.cpu_count()} cores, Python "
-        f"{platform.python_version()}, {datetime.now(UTC):%Y-%m-%d %H:%M} UTC; load average "
-        f"{load_before[0]:.1f} before, {load_after[0]:.1f} after (the machine is shared). "
+        f"Load average {load_before[0]:.1f} before (the header's is after). "
         f"Medians in ms over both compile orders; speed-up = old / new, the geometric mean "
         f"of the two orders' medians of the paired ratios; same = plans identical bit for "
         f"bit. `kernel`: the GA alone (80 x 5000, 64 cells, min_cells floor(64 / N)); `path`: "
@@ -208,9 +200,10 @@ def main() -> None:
         f"Writing one per-run plan's file (N = 10, the working tree's `_write_plan`, "
         f"{4 * args.runs * args.rounds} pairs): {synced:.2f} ms with `fsync`, {unsynced:.2f} "
         f"ms without (median wall time; per-run plans are written without).", ""])
-    if args.out:
-        args.out.write_text(text)
     print(text)
+    if args.out:
+        results_file.write(args.out, f"A run's own mTSP plan: this tree against {args.rev}",
+                           text)
 
 
 if __name__ == "__main__":

@@ -1,13 +1,13 @@
-"""CPU of a sweep over 8 communication ranges against a sweep over one (issue 22).
+"""CPU of a sweep over 8 communication ranges against a sweep over one.
 
 A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
-read at each range as it flies (:mod:`sarlink.engine.ranges`); a sweep over one range flies
-as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
-sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
-default chunk) but its jobs run in this process, so that the CPU time is that of the work,
-without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
-are equal. It also times the engine alone per run: a plain flight, a flight read at one
-range and at 8, and a traced flight read at 8 with the staircase.
+scanned at each range as it flies (:mod:`sarlink.engine.critical_ranges`); a sweep over one
+range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the
+paper's team sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the
+experiment's default chunk) but its jobs run in this process, so that the CPU time is that of
+the work, without a worker's start-up; it also sweeps the 8 ranges one by one and checks that
+the rows are equal. It also times the engine alone per run: a plain flight, a flight scanned
+at one range and at 8, and a traced flight scanned at 8 with the staircase.
 Run with
 
     python benchmarks/bench_ranges.py --runs 400 --out benchmarks/results/ranges.md
@@ -16,10 +16,8 @@ Run with
 from __future__ import annotations
 
 import argparse
-import datetime
 import math
 import operator
-import platform
 import statistics
 import tempfile
 import time
@@ -29,6 +27,7 @@ from typing import Any
 
 import pandas as pd
 
+import results_file
 from inprocess import InProcess
 from sarlink import Experiment, Mission, prepare, storage
 from sarlink.engine import Prepared
@@ -88,7 +87,7 @@ def split_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> dict[
 
 
 def engine_ms(drones: int, runs: int) -> list[float]:
-    """CPU ms per run: a flight, read at one range, at 8 ranges, and at 8 ranges with the
+    """CPU ms per run: a flight, scanned at one range, at 8 ranges, and at 8 ranges with the
     staircase (the best of three rounds, interleaved)."""
     prepared = prepare(Mission.build(planner="covb", drones=drones, rc=1000.0))
     works = [lambda k: prepared.run(0, k),
@@ -141,12 +140,8 @@ def main() -> None:
         parts = {n: split_sweep(rcs, args.runs, middle, root / f"split{n}")
                  for n, rcs in ((1, [1000.0]), (len(RANGES), RANGES))}
     lines = [
-        "# One flight, every range: CPU of a sweep over 8 ranges against one",
-        "",
-        f"`python benchmarks/bench_ranges.py --runs {args.runs} --drones "
-        f"{' '.join(map(str, args.drones))}`, {datetime.date.today()}, "
-        f"{platform.processor() or platform.machine()}, the sweeps' jobs run in the "
-        "benchmark's process: CPU time of the whole sweep (flights, tables, files), without "
+        "The sweeps' jobs run in the benchmark's process: CPU time of the whole sweep "
+        "(flights, tables, files), without "
         f"a worker's start-up; the best of {ROUNDS} rounds, the two sweeps interleaved, each "
         "first in every other round (and the median of the ratios of the two sweeps of each "
         "round, taken a few seconds apart).",
@@ -175,16 +170,16 @@ def main() -> None:
         f"The engine alone, CPU ms per run (mean of {min(args.runs, 50)} runs, the best of "
         "three rounds):",
         "",
-        "| N | plain flight (`Prepared.run`) | read at 1 range (`Prepared.run_ranges`) | "
-        "read at 8 ranges | traced, read at 8 ranges with the staircase |",
+        "| N | plain flight (`Prepared.run`) | scanned at 1 range (`Prepared.run_ranges`) | "
+        "scanned at 8 ranges | traced, scanned at 8 ranges with the staircase |",
         "|---|---|---|---|---|",
         *(f"| {n} | {' | '.join(f'{t:.2f}' for t in f['engine'])} |"
           for n, f in found.items()),
         "",
     ]
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text("\n".join(lines))
     print("\n".join(lines))
+    results_file.write(args.out, "One flight, every range: CPU of a sweep over 8 ranges "
+                       "against one", "\n".join(lines))
 
 
 if __name__ == "__main__":

@@ -14,7 +14,6 @@ browser shows them (one step per animation frame). Also measured: the comparison
 from __future__ import annotations
 
 import argparse
-import platform
 import sys
 import tempfile
 import time
@@ -24,6 +23,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
+import results_file
 from browser import chromium, open_page
 from sarlink import Mission, RunResult, replay, simulate
 from sarlink.engine.codes import Mode
@@ -163,9 +163,7 @@ def main() -> None:
             path = page.write(here / f"compare{drones}.html")
             sizes.append((drones, measure(driver, path, "canvas", steps)))
     lines = [
-        f"Replay benchmark: `python benchmarks/bench_replay.py --steps {args.steps}` on "
-        f"{platform.machine()}, {platform.python_version()}, headless Chromium (software "
-        "rendering), " + time.strftime("%Y-%m-%d") + ".",
+        "Headless Chromium (software rendering).",
         "",
         f"One full run: ConB, N = 22, r_c = 500 m, seed 1, run 1, {len(result.trajectory.t)} "
         f"steps. Each page is stepped through {args.steps} frames {stride} steps apart, each "
@@ -189,7 +187,7 @@ def main() -> None:
     text = "\n".join(lines) + "\n"
     print(text)
     if args.out is not None:
-        args.out.write_text(text, encoding="utf-8")
+        results_file.write(args.out, "Replay benchmark", text)
 
 
 if __name__ == "__main__":

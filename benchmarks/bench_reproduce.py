@@ -1,4 +1,4 @@
-"""Where the reproduction's time goes: CPU per experiment, planner and figure (issue 22).
+"""Where the reproduction's time goes: CPU per experiment, planner and figure.
 
 Every sweep of ``sarlink reproduce`` (the experiments of :mod:`sarlink.paper.experiments`,
 split by planner as the reproduction splits them, under the default reading or ``--reading``)
@@ -19,9 +19,7 @@ that a run's cost does not depend on its index (runs 0 .. R-1 stand for all 2000
 from __future__ import annotations
 
 import argparse
-import datetime
 import os
-import platform
 import tempfile
 import time
 from collections import defaultdict
@@ -29,6 +27,7 @@ from pathlib import Path
 
 import pandas as pd
 
+import results_file
 from inprocess import InProcess
 from sarlink import Experiment, execution
 from sarlink.cachedir import cache_root
@@ -109,11 +108,7 @@ def main() -> None:
     scale = RUNS / args.runs
     total = sum(r[3] for r in rows) * scale
     lines = [
-        "# Where the reproduction's time goes",
-        "",
-        f"`python benchmarks/bench_reproduce.py --runs {args.runs} --reading {args.reading}`, "
-        f"{datetime.date.today()}, "
-        f"{platform.processor() or platform.machine()}, on the shared 2-core host: every sweep "
+        "Every sweep "
         f"of `sarlink reproduce` under the reading {args.reading} at **{args.runs} runs per grid "
         f"point** (not the paper's {RUNS}: the machine is shared), its jobs in this process "
         "(CPU of flights, critical ranges, tables and files, and the mTSP plans of each run "
@@ -171,9 +166,8 @@ def main() -> None:
                      f"{frame['t_detect'].notna().mean():.1%} | {taken.mean():.1%} | "
                      f"{before.sum() / flown.sum():.1%} |")
     lines.append("")
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text("\n".join(lines))
     print("\n".join(lines))
+    results_file.write(args.out, "Where the reproduction's time goes", "\n".join(lines))
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ the sweep layer adds. Comparing with the kernel on as many cores (not with one c
 
     python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
-Targets (issue 4): overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. Other programs
+Targets: overhead < 5%; 2 workers >= 1.8x faster than 1 on 2 cores. Other programs
 on the machine, and a virtual machine's neighbours, slow phases down unevenly. So the phases
 run ``--repeats`` times, interleaved, and the fastest of each counts; the report gives, per
 phase, the CPU time the rest of the machine used meanwhile (from /proc/stat, Linux) and the
@@ -28,7 +28,6 @@ import argparse
 import multiprocessing
 import os
 import pickle
-import platform
 import tempfile
 import time
 from collections.abc import Callable
@@ -37,6 +36,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
+import results_file
 from sarlink import Experiment, prepare, sweep
 from sarlink.storage import open_store, run_table
 
@@ -182,10 +182,6 @@ def main() -> None:
     costs = per_run_costs(experiment)
 
     lines = [
-        f"Sweep benchmark: `python benchmarks/bench_sweep.py --runs {args.runs} --repeats "
-        f"{args.repeats}` on {platform.machine()}, {os.cpu_count()} cores, Python "
-        f"{platform.python_version()}.",
-        "",
         f"{total:,} runs: CovB and ConB x r_c 500 and 1000 m, 10 drones, 4000 s, chunks of "
         f"{experiment.chunk} runs; bare kernel {kernel_cpu / total * 1e3:.2f} ms CPU per run. "
         f"Every phase ran {args.repeats} times, interleaved; the fastest counts.",
@@ -222,9 +218,7 @@ def main() -> None:
     ]
     print("\n".join(lines))
     if args.out is not None:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text("\n".join(lines))
-        print(f"written to {args.out}")
+        results_file.write(args.out, "Sweep benchmark", "\n".join(lines))
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-"""What each choice named in issue 23 changes: the default reading with that one choice set to
+"""What each named choice of a reading changes: the default reading with that one choice set to
 each of its values, at a point of the paper's grid where the choice acts (docs/model.md,
 Readings).
 
@@ -18,6 +18,7 @@ from typing import get_args
 
 import numpy as np
 
+import results_file
 from sarlink import Mission, prepare
 from sarlink.config import DEFAULT_READING, READINGS, Readings
 
@@ -60,13 +61,12 @@ def _row(choice: str, value: str, point: dict[str, object], runs: int) -> str:
 
 def main(runs: int) -> str:
     values = {c: get_args(Readings.model_fields[c].annotation) for c, _ in CASES}
-    lines = [f"# What each named choice changes ({runs} runs per row, seed {SEED})", "",
-             f"The default reading (`{DEFAULT_READING}`) with one choice set to each value; "
+    lines = [f"{runs} runs per row, seed {SEED}. The default reading (`{DEFAULT_READING}`) "
+             "with one choice set to each value; "
              f"the default's value is in bold. P_d and P_s at t_d = {TD:g} s (± one binomial "
              "standard error), mission time = mean notification time of the runs notified "
              "within 4000 s, immediate = share notified at the step of detection, reachability "
              "= mean % of the 4000 s the target had a route to the BS.", "",
-             "Command: `.venv/bin/python benchmarks/readings_effects.py " + str(runs) + "`", "",
              "| choice | point | value | P_d | P_s | mission time, s | immediate | "
              "reachability, % |", "|---|---|---|---|---|---|---|---|"]
     default = READINGS[DEFAULT_READING].choices
@@ -84,6 +84,5 @@ def main(runs: int) -> str:
 
 if __name__ == "__main__":
     text = main(int(sys.argv[1]) if len(sys.argv) > 1 else 200)
-    out = Path(__file__).parent / "results" / "readings-effects.md"
-    out.write_text(text)
-    print(f"wrote {out}")
+    results_file.write(Path(__file__).parent / "results" / "readings-effects.md",
+                       "What each named choice changes", text)
