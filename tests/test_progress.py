@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import io
-import itertools
 from pathlib import Path
 
 import pytest
@@ -17,10 +16,11 @@ from test_experiments import small
 
 def test_plain_lines_start_every_tenth_and_end() -> None:
     out = io.StringIO()
-    clock = itertools.count(0.0, 2.0)
-    lines = PlainLines("runs", stream=out, clock=lambda: next(clock))
+    now = [0.0]
+    lines = PlainLines("runs", stream=out, clock=lambda: now[0])
     task = lines.add_task("sweep (2 points): CovB", total=30)
     for _ in range(30):
+        now[0] += 2.0
         lines.advance(task, 1)
     text = out.getvalue().splitlines()
     assert text[0] == "sweep (2 points): CovB: 0% (0/30 runs, 0 s)"
