@@ -23,7 +23,6 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
-import sys
 import threading
 import time
 from collections.abc import Callable, Generator, Iterator, Sequence
@@ -34,24 +33,16 @@ from typing import Any, NamedTuple, Protocol
 
 import pandas as pd
 import pyarrow as pa
-from rich.progress import (
-    BarColumn,
-    MofNCompleteColumn,
-    Progress,
-    ProgressColumn,
-    Task,
-    TextColumn,
-    TimeRemainingColumn,
-)
-from rich.text import Text
 
 from sarlink import storage
+from sarlink.compile_times import compile_estimate, describe_parts, record_compile
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.engine.build import radio_identity
+from sarlink.engine.build import kernel_for, on_disk, radio_identity
 from sarlink.engine.radios import get_radio
 from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner
+from sarlink.progress import progress as progress_bars
 from sarlink.simulation import (
     Plugins,
     adopt_plugins,
@@ -169,16 +160,17 @@ def _init_worker(parent: int) -> None:
 _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 """One core per worker process: parallelism comes from the processes."""
 
-def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
-    """Compile one Numba part in this worker, or load it from Numba's cache: the kernel of a
-    planner's rule and a radio model (``("kernel", planner, radio)``; those of range-free
-    teams read a flight at several ranges as it flies), the reading of a flight's
-    notification staircase (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
+def _compile(part: tuple[str, ...], plugins: Plugins) -> float:
+    """Compile one Numba part in this worker, or load it from Numba's cache, and return the
+    seconds it took: the kernel of a planner's rule and a radio model
+    (``("kernel", planner, radio)``; those of range-free teams scan a flight at several
+    ranges as it flies), the scan of a flight's notification staircase
+    (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
 
-    On a fresh machine every worker would otherwise compile each part at its first task
-    (the kernels 10-50 s of CPU each, the staircase 14 s, the GA 13 s); compiled once, the
-    parts spread over the workers, the others then load them from the cache.
+    On a fresh machine every worker would otherwise compile each part at its first task;
+    compiled once, the parts spread over the workers, the others then load them from the cache.
     """
+    start = time.perf_counter()
     adopt_plugins(plugins)
     if part[0] == "mtsp":
         from sarlink.mtsp import grid_cells, solve
@@ -186,6 +178,21 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
         solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
     else:
         warm_up(part[1], part[2], ranges=part[0] == "ranges")
+    return time.perf_counter() - start
+
+
+def _compiled(part: tuple[str, ...]) -> bool:
+    """Whether Numba's disk cache already holds ``part``'s machine code (it then loads in a
+    second or so)."""
+    if part[0] == "mtsp":
+        from sarlink.mtsp.ga import _ga_kernel
+
+        return on_disk(_ga_kernel)
+    if part[0] == "ranges":
+        from sarlink.engine.ranges import critical
+
+        return on_disk(critical)
+    return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2])))
 
 
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
@@ -238,14 +245,22 @@ class _Local:
     def __init__(self, pool: ProcessPoolExecutor, count: int) -> None:
         self.pool, self.count = pool, count
 
-    def compile(self, jobs: Sequence[_Job]) -> None:
-        """Compile the parts ``jobs`` need on all workers at once (with one worker, each
-        task compiles what it needs when it needs it)."""
-        parts = _parts(jobs)
-        if self.count > 1 and len(parts) > 1:
-            plugins = plugins_in_code()
-            for future in [self.pool.submit(_compile, part, plugins) for part in parts]:
-                future.result()
+    def compile(self, jobs: Sequence[_Job], progress: bool) -> None:
+        """Compile the parts ``jobs`` need that Numba's disk cache lacks, on all workers at
+        once, saying so first (a fresh machine spends minutes here, once)."""
+        parts = [part for part in _parts(jobs) if not _compiled(part)]
+        if not parts:
+            return
+        plugins = plugins_in_code()
+        guess = compile_estimate(parts, self.count)
+        with progress_bars(progress, "parts", rate=False) as bars:
+            shown = bars.add_task(
+                f"compiling the engine ({describe_parts(parts)}), once per machine: about "
+                f"{guess:.0f} s", total=len(parts))
+            futures = {self.pool.submit(_compile, part, plugins): part for part in parts}
+            for future in as_completed(futures):
+                record_compile(futures[future], future.result())
+                bars.advance(shown, 1)
 
     def results(self, jobs: Sequence[_Job]) -> _Results:
         futures = {self.pool.submit(_run_chunk, *call): job
@@ -320,20 +335,6 @@ def start_workers(workers: int | None = None, *, scheduler: str | None = None,
             except (OSError, ValueError, TypeError) as exc:  # unreachable, or not an address
                 raise ConfigError(f"cannot reach the Dask scheduler {scheduler}: {exc}") from None
         yield _Dask(client)
-
-
-class _RunsPerSecond(ProgressColumn):
-    def render(self, task: Task) -> Text:
-        speed = task.finished_speed or task.speed
-        return Text("? runs/s" if speed is None else f"{speed:,.0f} runs/s",
-                    style="progress.data.speed")
-
-
-def _progress_bar(enabled: bool) -> Progress:
-    return Progress(
-        TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TextColumn("runs"),
-        _RunsPerSecond(), TimeRemainingColumn(), disable=not enabled,
-    )
 
 
 def _check_names(experiment: Experiment) -> None:
@@ -411,8 +412,8 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
                         for store, (experiment, _) in zip(stores, jobs, strict=True))
             name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
             if isinstance(pool, _Local):
-                pool.compile(batches)
-            with _progress_bar(progress and sys.stdout.isatty()) as bar, \
+                pool.compile(batches, progress)
+            with progress_bars(progress, "runs") as bar, \
                     closing(pool.results(batches)) as results:
                 shown = bar.add_task(name, total=total,
                                      completed=total - sum(len(t.runs) for t in tasks))

@@ -153,6 +153,14 @@ def _import(path: Path) -> ModuleType:
     return module
 
 
+def on_disk(dispatcher: Any) -> bool:
+    """Whether Numba's disk cache holds machine code for ``dispatcher`` (its index file
+    exists): its first call then loads it instead of compiling it."""
+    index = getattr(getattr(getattr(dispatcher, "_cache", None), "_cache_file", None),
+                    "_index_path", None)
+    return index is not None and os.path.exists(index)
+
+
 def radio_identity(radio: RadioModel) -> tuple[object, ...]:
     """What a kernel depends on of ``radio``: its hooks (models that share them, the disc and
     log-normal shadowing, share kernels)."""

@@ -50,6 +50,7 @@ from sarlink.paper.variants import (
 from sarlink.planners import PAPER_PLANNERS, get_planner
 from sarlink.plantime import plan_seconds
 from sarlink.playback import compare
+from sarlink.progress import progress as progress_bars
 from sarlink.simulation import simulate
 
 __all__ = ["ReproductionResult", "reproduce"]
@@ -98,7 +99,8 @@ def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
     return numbers
 
 
-def _plan_times(path: Path, missions: list[Mission], repeats: int) -> pd.DataFrame:
+def _plan_times(path: Path, missions: list[Mission], repeats: int, progress: bool
+                ) -> pd.DataFrame:
     """Fig. 1's plan times: read from ``path`` if measured there for the same missions and
     repeats, otherwise measured now (one mission at a time, nothing else running) and stored."""
     setting = {"missions": [m.model_dump(mode="json") for m in missions], "repeats": repeats,
@@ -107,9 +109,14 @@ def _plan_times(path: Path, missions: list[Mission], repeats: int) -> pd.DataFra
         stored = json.loads(path.read_text())
         if stored.get("setting") == setting:
             return pd.DataFrame(stored["rows"])
-    rows = [{"planner": m.team.planner, "drones": m.team.drones, "rc": m.channel.rc,
-             "repeat": k, "seconds": plan_seconds(m)}
-            for m in missions for k in range(repeats)]
+    rows = []
+    with progress_bars(progress, "plans", rate=False) as bars:
+        shown = bars.add_task("timing the plans of Fig. 1", total=len(missions) * repeats)
+        for m in missions:
+            for k in range(repeats):
+                rows.append({"planner": m.team.planner, "drones": m.team.drones,
+                             "rc": m.channel.rc, "repeat": k, "seconds": plan_seconds(m)})
+                bars.advance(shown, 1)
     temporary = path.with_suffix(".tmp")
     temporary.write_text(json.dumps({"setting": setting, "machine": machine(), "rows": rows},
                                     indent=1))
@@ -201,7 +208,8 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     if 1 in numbers:
         t0 = time.perf_counter()
         missions = plan_time_missions(plan_iterations)
-        tables["plan_times"] = _plan_times(out / "plan_times.json", missions, PLAN_REPEATS)
+        tables["plan_times"] = _plan_times(out / "plan_times.json", missions, PLAN_REPEATS,
+                                           progress)
         stages.append(Stage("plan times", f"Fig. 1: {len(missions)} plans × {PLAN_REPEATS} "
                             "repeats", time.perf_counter() - t0))
 
