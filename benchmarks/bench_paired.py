@@ -16,7 +16,7 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 ``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
 as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
 ``--ranges 250,500,...`` times range-free flights read at those ranges as they fly (a sweep
-over ``rc``, :mod:`sarlink.engine.ranges`) instead of recorded flights, and compares every
+over ``rc``, :mod:`sarlink.engine.critical_ranges`) instead of recorded flights, and compares every
 range's records. Both revisions must have ``Prepared.record(streams, scenario,
 trajectory=..., read_at=...)``.
 """

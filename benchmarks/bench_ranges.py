@@ -1,7 +1,7 @@
 """CPU of a sweep over 8 communication ranges against a sweep over one (issue 22).
 
 A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
-read at each range as it flies (:mod:`sarlink.engine.ranges`); a sweep over one range flies
+read at each range as it flies (:mod:`sarlink.engine.critical_ranges`); a sweep over one range flies
 as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's team
 sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
 default chunk) but its jobs run in this process, so that the CPU time is that of the work,

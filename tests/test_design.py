@@ -22,9 +22,9 @@ from typer.testing import CliRunner
 from sarlink import ConfigError, Experiment, Mission, load, sweep
 from sarlink.cli import app
 from sarlink.config import mission_hash
+from sarlink.design import DesignAnswer, DesignRequest, Verdict, design
+from sarlink.design.sequential import worse
 from sarlink.metrics import summarize
-from sarlink.sizing import DesignAnswer, DesignRequest, Verdict, design
-from sarlink.sizing.sequential import worse
 
 SMALL = Mission.build(reading="sarlink-2", size=2000.0, rc=500.0)
 """The small setting the expectations below were measured on, under the reading of then."""

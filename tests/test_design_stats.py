@@ -9,8 +9,7 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 from scipy.stats import binom
 
-from sarlink.metrics import wilson
-from sarlink.sizing.sequential import (
+from sarlink.design.sequential import (
     Schedule,
     Verdict,
     lower_bound,
@@ -19,6 +18,7 @@ from sarlink.sizing.sequential import (
     verdict,
     worse,
 )
+from sarlink.metrics import wilson
 
 counts = st.integers(1, 3000).flatmap(lambda n: st.tuples(st.integers(0, n), st.just(n)))
 errors = st.sampled_from([0.025, 0.005, 1e-4])

@@ -22,7 +22,7 @@ from sarlink.engine import sharing
 from sarlink.execution import sweep, sweep_all
 from sarlink.planners import registry
 from sarlink.simulation import prepare
-from test_ranges import same_outcome
+from test_critical_ranges import same_outcome
 
 sys.path.insert(0, str(Path(__file__).parent / "plugins"))
 from homebound import HOMEBOUND

@@ -10,12 +10,12 @@ Tasks that may share their flights are one job (:mod:`sarlink.engine.sharing`), 
 rows as flying each: the same runs, with the same seed, of the points of a team that may fly
 the same at every range (a route planner, a rule declared ``range_free`` such as CovB, drones
 that do not report: see :attr:`sarlink.engine.run.Prepared.range_free`) that differ only in
-``rc``, each run flown once and read at every range (:mod:`sarlink.engine.ranges`); and of a
-mission with drones that report and the same mission without reporting, whose runs the former
-are taken from wherever no drone reports, in whichever folders they are (the paper's ``main``
-and ``report``). A job of one range flies as before, unless the experiment asks for the
-notification staircase (``Experiment.staircase``): a flight read at several ranges costs more
-than a plain one, which only a job of several ranges earns back.
+``rc``, each run flown once and read at every range (:mod:`sarlink.engine.critical_ranges`);
+and of a mission with drones that report and the same mission without reporting, whose runs
+the former are taken from wherever no drone reports, in whichever folders they are (the
+paper's ``main`` and ``report``). A job of one range flies as before, unless the experiment
+asks for the notification staircase (``Experiment.staircase``): a flight read at several
+ranges costs more than a plain one, which only a job of several ranges earns back.
 """
 
 from __future__ import annotations

@@ -71,7 +71,7 @@ def summarize(
         by = list(read_manifest(results)["experiment"]["grid"])
         runs = load(results)
         if rc is not None:
-            from sarlink.ranges import at_range
+            from sarlink.at_range import at_range
 
             runs = at_range(runs, rc)
         try:

@@ -58,7 +58,7 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
 def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
                  reads_ranges: bool = True) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only) and
-    ``radio``. The reading at several ranges (:mod:`sarlink.engine.ranges`, inlined: most
+    ``radio``. The reading at several ranges (:mod:`sarlink.engine.critical_ranges`, inlined: most
     of a kernel's compile time after the rule) is compiled only into a kernel whose team may
     fly the same at every range, and if ``reads_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}

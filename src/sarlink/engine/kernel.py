@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import area, graph, motion, ranges, records, sensing
+from sarlink.engine import area, critical_ranges, graph, motion, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -117,7 +117,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     home_max = far if polygon else motion.farthest_home(p)
     reading = READS_RANGES and r2s.shape[0] > 0
     if READS_RANGES:
-        rd = ranges.new_reading(r2s, n, mp, cp_steps.shape[0])
+        rd = critical_ranges.new_reading(r2s, n, mp, cp_steps.shape[0])
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
@@ -138,9 +138,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         reachable, connected = False, 0
         if READS_RANGES and reading:  # compiled only where the team may be range-free (build)
-            ranges.read_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0, knows, spread,
-                             stack, rd, near, push)
-        if not (reading or p.trace):  # a traced flight is read afterwards (engine.ranges)
+            critical_ranges.read_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0,
+                                      knows, spread, stack, rd, near, push)
+        if not (reading or p.trace):  # a traced flight is read afterwards (engine.critical_ranges)
             graph.bs_component(adj, n, routed, stack)
             if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
                 t_not = t
@@ -165,7 +165,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                   acc_reach, acc_conn, p.dt if reachable else 0.0,
                                   p.dt * connected / n)
             if READS_RANGES and reading:
-                ranges.carry_reading(k + 1, p, cp_steps, ci, rd)
+                critical_ranges.carry_reading(k + 1, p, cp_steps, ci, rd)
             ci = cp_steps.shape[0]
             break
 
@@ -194,7 +194,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan
     kk = min(traj_pos.shape[0], k + 1)  # a run stopped early records fewer steps
-    at_ranges = ranges.read_records(rd) if READS_RANGES else records.no_ranges(cp_steps)
+    at_ranges = critical_ranges.read_records(rd) if READS_RANGES else records.no_ranges(cp_steps)
     return RunRecord(t_det, t_not, detector, t_not >= 0.0 and t_not == t_det,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],

@@ -33,7 +33,7 @@ class Track(NamedTuple):
 
 class AtRanges(NamedTuple):
     """A range-free flight's records at each range it was read at as it flew
-    (:mod:`sarlink.engine.ranges`), in the order of the ranges given; empty otherwise."""
+    (:mod:`sarlink.engine.critical_ranges`), in the order of the ranges given; empty otherwise."""
 
     notified: np.ndarray
     """Per range: the step of the notification (``-1``: never)."""

@@ -30,10 +30,10 @@ from sarlink.engine.codes import (
     SHADOWING_CODES,
     STOP_CODES,
 )
+from sarlink.engine.critical_ranges import Critical, critical
 from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
-from sarlink.engine.ranges import Critical, critical
 from sarlink.engine.records import AtRanges, RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering

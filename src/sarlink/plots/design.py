@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from sarlink.sizing import DesignAnswer, Estimate
+from sarlink.design import DesignAnswer, Estimate
 
 
 def _errorbar(ax: plt.Axes, x: Sequence[float], estimates: Sequence[Estimate],

@@ -1,4 +1,4 @@
-"""Critical ranges (sarlink.engine.ranges) against direct flights at the same ranges.
+"""Critical ranges (sarlink.engine.critical_ranges) against direct flights at the same ranges.
 
 A range-free team flies the same at every range, so one flight read at any range must give
 exactly what the engine gives when it flies at that range: the same event times, immediate
@@ -21,12 +21,12 @@ from hypothesis import strategies as st
 
 from naive import component
 from sarlink import ConfigError, Experiment, Mission, execution, storage
+from sarlink.at_range import at_range
 from sarlink.engine import RadioModel, sharing
 from sarlink.engine.radios import lognormal
 from sarlink.engine.streams import copied, run_streams
 from sarlink.execution import sweep
 from sarlink.metrics import summarize
-from sarlink.ranges import at_range
 from sarlink.result import RunResult
 from sarlink.simulation import prepare
 
@@ -241,11 +241,11 @@ def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
 
 def test_warming_up_the_reading_compiles_it() -> None:
     """In a process of its own: this one has read flights at several ranges already."""
-    code = ("from sarlink.engine import ranges\n"
+    code = ("from sarlink.engine import critical_ranges\n"
             "from sarlink.simulation import warm_up\n"
-            "assert not ranges.critical.signatures\n"
+            "assert not critical_ranges.critical.signatures\n"
             "warm_up('mtsp', 'disc', ranges=True)\n"
-            "assert ranges.critical.signatures\n")
+            "assert critical_ranges.critical.signatures\n")
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
@@ -363,13 +363,13 @@ def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int,
     is the links within it, and a range not marked as moved still holds the BS component of
     that graph and the reachability found when it last moved: the marks may skip a search only
     where neither can have changed."""
-    from sarlink.engine import graph, ranges
+    from sarlink.engine import critical_ranges, graph
     from sarlink.engine.geometry import FAR, PAD
 
     rng = np.random.default_rng(seed)
     m = n + 2
     mp = (m + PAD - 1) // PAD * PAD
-    rd = ranges.new_reading(np.array(rcs) ** 2, n, mp, 1)
+    rd = critical_ranges.new_reading(np.array(rcs) ** 2, n, mp, 1)
     px, py, pz = np.full(mp, FAR), np.full(mp, FAR), np.zeros(mp)
     px[n:m], py[n:m] = (0.0, 150.0), (0.0, 150.0)  # the BS, the target
     fade = rng.lognormal(0.0, 0.5, (m, m)) if shadowed else np.ones((0, 0))
@@ -380,7 +380,7 @@ def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int,
     for _ in range(steps):  # moves that change a link or two, or several ranges at once
         pos += rng.normal(0.0, move, pos.shape)
         px[:n], py[:n] = pos[:, 0], pos[:, 1]
-        ranges._band_links(px, py, pz, fade, shadowed, rd, near, 0.0, False)
+        critical_ranges._band_links(px, py, pz, fade, shadowed, rd, near, 0.0, False)
         for j, r2 in enumerate(rd.thr):
             links = {(a, b) for a in range(m) for b in range(a + 1, m)
                      if (px[a] - px[b]) ** 2 + (py[a] - py[b]) ** 2

@@ -1,7 +1,7 @@
 """The adaptive search: which candidates get runs, and when the answer is known.
 
 Two phases, both spending runs in rounds (one pool of workers per round; every candidate of a
-round grows to its next look of the :class:`~sarlink.sizing.sequential.Schedule`).
+round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`).
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
    (1, 2, 4, ..., the largest); once a size meets the requirement, or the ladder is decided,
@@ -28,11 +28,11 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from sarlink.config import Mission
-from sarlink.sizing.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
-from sarlink.sizing.candidates import Candidate, Variant, refinements
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.runs import Runs, Tally
-from sarlink.sizing.sequential import Schedule, Verdict, not_worse_by, verdict, worse
+from sarlink.design.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
+from sarlink.design.candidates import Candidate, Variant, refinements
+from sarlink.design.request import DesignRequest
+from sarlink.design.runs import Runs, Tally
+from sarlink.design.sequential import Schedule, Verdict, not_worse_by, verdict, worse
 
 __all__ = ["search"]
 

@@ -12,9 +12,9 @@ from typing import Any, Self
 from pydantic import Field, field_validator, model_validator
 
 from sarlink.config import Checked, ConfigError, Mission, param_groups
+from sarlink.design.candidates import Candidate, Variant
+from sarlink.design.sequential import Schedule
 from sarlink.planners import planner_names
-from sarlink.sizing.candidates import Candidate, Variant
-from sarlink.sizing.sequential import Schedule
 
 __all__ = ["DesignRequest"]
 

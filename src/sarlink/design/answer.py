@@ -6,10 +6,10 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from sarlink.sizing.candidates import Candidate
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.runs import Tally
-from sarlink.sizing.sequential import Verdict
+from sarlink.design.candidates import Candidate
+from sarlink.design.request import DesignRequest
+from sarlink.design.runs import Tally
+from sarlink.design.sequential import Verdict
 
 __all__ = ["DesignAnswer", "Estimate", "PlannerAnswer", "TeamSize", "Tuning"]
 
