@@ -100,7 +100,7 @@ def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
 
 
 def test_the_range_figure_agrees_with_the_flown_ranges(quick: ReproductionResult) -> None:
-    """Fig. 10's P_s at a continuous range, read from one flight per run, equals the main
+    """Fig. 10's P_s at a continuous range, evaluated from one flight per run, equals the main
     table's at the three ranges flown; the teams flown per range are not in it."""
     curve = pd.read_csv(quick.out / "tables" / "range_curve.csv")
     main = pd.read_csv(quick.out / "tables" / "main.csv")

@@ -10,11 +10,11 @@ Tasks that may share their flights are one job (:mod:`sarlink.engine.sharing`), 
 rows as flying each: the same runs, with the same seed, of the points of a team that may fly
 the same at every range (a route planner, a rule declared ``range_free`` such as CovB, drones
 that do not report: see :attr:`sarlink.engine.run.Prepared.range_free`) that differ only in
-``rc``, each run flown once and read at every range (:mod:`sarlink.engine.critical_ranges`);
+``rc``, each run flown once and scanned at every range (:mod:`sarlink.engine.critical_ranges`);
 and of a mission with drones that report and the same mission without reporting, whose runs
 the former are taken from wherever no drone reports, in whichever folders they are (the
 paper's ``main`` and ``report``). A job of one range flies as before, unless the experiment
-asks for the notification staircase (``Experiment.staircase``): a flight read at several
+asks for the notification staircase (``Experiment.staircase``): a flight scanned at several
 ranges costs more than a plain one, which only a job of several ranges earns back.
 """
 
@@ -172,7 +172,7 @@ _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
     """Compile one Numba part in this worker, or load it from Numba's cache: the kernel of a
     planner's rule and a radio model (``("kernel", planner, radio)``; those of range-free
-    teams read a flight at several ranges as it flies), the reading of a flight's
+    teams scan a flight at several ranges as it flies), the scan of a flight's
     notification staircase (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
 
     On a fresh machine every worker would otherwise compile each part at its first task
@@ -191,7 +191,7 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> None:
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
-    (one per rule and radio model), and the reading of the staircase if a job asks for it
+    (one per rule and radio model), and the scan of the staircase if a job asks for it
     whose team may fly once for every range (after the kernels, whose first compile also
     compiles what they share; the others' rows have no staircase)."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()

@@ -141,7 +141,7 @@ def _range_free_request(flags: MissionFlags) -> bool:
         return True
     try:
         return "rc" not in read_toml(config).get("channel", {})
-    except (ConfigError, OSError):  # the mission's own reading names the flag and the error
+    except (ConfigError, OSError):  # the mission's own loading names the flag and the error
         return False
 
 
