@@ -22,7 +22,7 @@ from typer.testing import CliRunner
 from sarlink import ConfigError, Experiment, Mission, load, sweep
 from sarlink.cli import app
 from sarlink.config import mission_hash
-from sarlink.design import DesignAnswer, DesignRequest, Verdict, design
+from sarlink.design import Decision, DesignAnswer, DesignRequest, design
 from sarlink.design.sequential import worse
 from sarlink.metrics import summarize
 
@@ -57,7 +57,7 @@ def test_a_requirement_no_team_can_reach_is_not_reachable(tmp_path: Path) -> Non
         assert planner.status == "not reachable"
         assert planner.smallest is None and planner.undecided == ()
         assert [s.drones for s in planner.team_sizes] == [1, 2, 3, 4]
-        assert all(s.verdict is Verdict.FAILS for s in planner.team_sizes)
+        assert all(s.verdict is Decision.FAILS for s in planner.team_sizes)
     bound = math.pi * 1000.0**2 / 4000.0**2
     runs = candidate_runs(tmp_path, answer)
     far = np.hypot(runs["target_x"] - 2000.0, runs["target_y"] - 2000.0) > 1000.0
@@ -91,7 +91,7 @@ def test_mtsp_with_two_drones_always_succeeds_by_the_flight_budget(tmp_path: Pat
     (mtsp,) = answer.planners
     assert mtsp.status == "reached" and mtsp.smallest == 2
     assert mtsp.chosen is not None and mtsp.chosen.successes == mtsp.chosen.runs
-    assert mtsp.team_sizes[0].drones == 1 and mtsp.team_sizes[0].verdict is Verdict.FAILS
+    assert mtsp.team_sizes[0].drones == 1 and mtsp.team_sizes[0].verdict is Decision.FAILS
 
 
 # -- the adaptive answer against a brute-force sweep ---------------------------------------------

@@ -16,7 +16,7 @@ from sarlink.config import ConfigError
 from sarlink.config.region import area_label
 
 if TYPE_CHECKING:
-    from sarlink.design import DesignAnswer, DesignRequest, Estimate, PlannerAnswer
+    from sarlink.design import CandidateEstimate, DesignAnswer, DesignRequest, PlannerAnswer
     from sarlink.design.needed_range import PlannerRanges
 
 _OPTION_NAMES = {"planners": "--planner", "options": "--option"}
@@ -54,7 +54,7 @@ def _options(specs: list[str]) -> dict[str, list[Any]]:
     return options
 
 
-def _probability(e: Estimate) -> str:
+def _probability(e: CandidateEstimate) -> str:
     return f"{e.p:.3f} [{e.lo:.3f}, {e.hi:.3f}]"
 
 

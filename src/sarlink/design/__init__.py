@@ -13,27 +13,27 @@ from pathlib import Path
 
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
-from sarlink.design.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
-from sarlink.design.candidates import Candidate, Setting, Variant
+from sarlink.design.answer import CandidateEstimate, DesignAnswer, PlannerAnswer, TeamSize, Tuning
+from sarlink.design.candidates import Candidate, PlannerVariant, Setting
 from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.search import search
-from sarlink.design.sequential import Verdict
+from sarlink.design.sequential import Decision
 from sarlink.execution import start_workers
 
 __all__ = [
     "Candidate",
+    "CandidateEstimate",
+    "Decision",
     "DesignAnswer",
     "DesignRequest",
-    "Estimate",
     "PlannerAnswer",
+    "PlannerVariant",
     "Runs",
     "Setting",
     "Tally",
     "TeamSize",
     "Tuning",
-    "Variant",
-    "Verdict",
     "design",
 ]
 
