@@ -274,3 +274,15 @@ def test_a_killed_design_resumes_to_the_same_answer(
     again = design(full.request, tmp_path, progress=False)
     assert again.to_json()["planners"] == full.to_json()["planners"]
     assert again.runs_simulated == full.runs_used - stored
+
+
+def test_sarlink_design_and_at_range_stay_the_functions_beside_their_modules() -> None:
+    """Importing ``sarlink.design`` or ``sarlink.at_range`` (the modules) would bind the
+    package's names to them; ``sarlink.design(...)`` still calls the function."""
+    import sarlink
+    import sarlink.at_range
+    import sarlink.design.answer
+    from sarlink.at_range import at_range
+
+    assert sarlink.design is design and sarlink.at_range is at_range
+    assert type(sys.modules["sarlink.design"]).__name__ == "module"  # still importable
