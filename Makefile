@@ -1,6 +1,6 @@
 # Entry points for a fresh machine with Python 3.11, pip and make (README, "Set-up"):
 #   make demo   a quick reproduction of the paper
-#   make test   ruff, mypy and every test (installs Debian's Chromium and its driver if missing)
+#   make test   ruff, mypy, import-linter and every test (installs Debian's Chromium if missing)
 #   make docs   the documentation site in site/, built with mkdocs --strict
 #   make lock   re-lock requirements.lock after a change to the dependencies in pyproject.toml
 # Each creates the virtual environment (.venv) on first use, from requirements.lock: exact
@@ -56,6 +56,7 @@ browser:
 lint: $(BIN)/sarlink
 	$(BIN)/ruff check src tests benchmarks examples docs/hooks.py
 	$(BIN)/mypy
+	$(BIN)/lint-imports --no-logo
 
 test: browser lint
 	$(BIN)/pytest -q -n auto --dist loadfile
@@ -75,4 +76,4 @@ bench: $(BIN)/sarlink
 	$(BIN)/python benchmarks/bench_sweep.py --out benchmarks/results/sweep.md
 
 clean:
-	rm -rf $(VENV) $(TOOLS) site .pytest_cache .mypy_cache .ruff_cache .hypothesis
+	rm -rf $(VENV) $(TOOLS) site .pytest_cache .mypy_cache .ruff_cache .hypothesis .import_linter_cache

@@ -15,10 +15,10 @@ compile order, and the speed-up is the geometric mean of their two medians. Run 
 
 ``--plugin covb`` flies the working tree's CovB both ways instead: as the built-in rule and
 as the same rule written outside sarlink (``tests/plugins/covb_again.py``), the plug-in path.
-``--ranges 250,500,...`` times range-free flights scanned at those ranges as they fly (a
-sweep over ``rc``, :mod:`sarlink.engine.critical_ranges`) instead of recorded flights, and
-compares every range's records. Both revisions must have ``Prepared.record(streams, scenario,
-trajectory=..., read_at=...)``.
+``--ranges 250,500,...`` times range-free flights scanned at those ranges as they fly (a sweep
+over ``rc``, :mod:`sarlink.engine.critical_ranges`) instead of recorded flights, and compares every
+range's records. Both revisions must have ``Prepared.record(streams, scenario,
+trajectory=..., scan_at=...)`` (``read_at`` before the range scan was named so).
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ import sys
 import tarfile
 import tempfile
 import time
+from inspect import signature
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -76,10 +77,12 @@ class Side:
         self.mission_of, self.prepare_of, self.kernel_of = mission_of, prepare_of, kernel_of
 
     def run_once(self, case: str, reading: str, seed: int, run: int,
-                 read_at: tuple[float, ...] = ()) -> tuple[float, Any]:
-        """Fly run ``run``: recorded, or scanned at the ranges ``read_at`` if any."""
+                 scan_at: tuple[float, ...] = ()) -> tuple[float, Any]:
+        """Fly run ``run``: recorded, or scanned at the ranges ``scan_at`` if any."""
         prepared = self.prepare_of(self.mission_of(case, reading))
-        how: dict[str, Any] = {"read_at": read_at} if read_at else {"trajectory": True}
+        # the keyword as the side's revision names it
+        keyword = "scan_at" if "scan_at" in signature(prepared.record).parameters else "read_at"
+        how: dict[str, Any] = {keyword: scan_at} if scan_at else {"trajectory": True}
         streams = run_streams(seed, run)
         # each side draws with its own revision's draw_scenario, which its run module imports
         draw = sys.modules[type(prepared).__module__].draw_scenario
@@ -150,23 +153,23 @@ def sides(rev: str, folder: Path) -> dict[str, Side]:
 
 
 def measure(rev: str, case: str, runs: int, rounds: int, new_first: bool, reading: str,
-            read_at: tuple[float, ...]) -> None:
+            scan_at: tuple[float, ...]) -> None:
     """Print ``identical speed-up`` for one case, with the kernels compiled in one order."""
     with tempfile.TemporaryDirectory() as tmp:
         both = sides(rev, Path(tmp))
         order = ("new", "old") if new_first else ("old", "new")
         for tag in order:  # compile in that order
-            both[tag].run_once(case, reading, 1, 0, read_at)
+            both[tag].run_once(case, reading, 1, 0, scan_at)
         same = sum(all(np.array_equal(a, b, equal_nan=a.dtype.kind == "f") for a, b in
-                       zip(outcome(both["old"].run_once(case, reading, 1, r, read_at)[1]),
-                           outcome(both["new"].run_once(case, reading, 1, r, read_at)[1]),
+                       zip(outcome(both["old"].run_once(case, reading, 1, r, scan_at)[1]),
+                           outcome(both["new"].run_once(case, reading, 1, r, scan_at)[1]),
                            strict=True))
                    for r in range(runs))
         ratios = []
         for rnd in range(rounds):
             for r in range(runs):
                 pair_order = ["old", "new"][:: 1 if (rnd + r) % 2 == 0 else -1]
-                pair = {tag: both[tag].run_once(case, reading, 1, r, read_at)[0]
+                pair = {tag: both[tag].run_once(case, reading, 1, r, scan_at)[0]
                         for tag in pair_order}
                 ratios.append(pair["old"] / pair["new"])
     print(same, np.median(ratios))
@@ -189,10 +192,10 @@ def main() -> None:
     parser.add_argument("--out", type=Path, help="write the results here (markdown)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
-    read_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
+    scan_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
     if args.one:  # one compile order, in a process of its own
         measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
-                args.reading, read_at)
+                args.reading, scan_at)
         return
     lines = []
     for case in args.cases.split(","):

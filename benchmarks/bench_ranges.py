@@ -2,12 +2,12 @@
 
 A range-free team (here CovB) flies once per run for every range of a grid over ``rc``,
 scanned at each range as it flies (:mod:`sarlink.engine.critical_ranges`); a sweep over one
-range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the
-paper's team sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the
-experiment's default chunk) but its jobs run in this process, so that the CPU time is that of
-the work, without a worker's start-up; it also sweeps the 8 ranges one by one and checks that
-the rows are equal. It also times the engine alone per run: a plain flight, a flight scanned
-at one range and at 8, and a traced flight scanned at 8 with the staircase.
+range flies as it always did. This script sweeps CovB over 8 ranges and over one, at the paper's
+team sizes, with the sweep's own code (planning, jobs, tables, Parquet files, the experiment's
+default chunk) but its jobs run in this process, so that the CPU time is that of the work,
+without a worker's start-up; it also sweeps the 8 ranges one by one and checks that the rows
+are equal. It also times the engine alone per run: a plain flight, a flight scanned at one
+range and at 8, and a traced flight scanned at 8 with the staircase.
 Run with
 
     python benchmarks/bench_ranges.py --runs 400 --out benchmarks/results/ranges.md
@@ -83,7 +83,7 @@ def split_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> dict[
     finally:
         for (owner, name, _), work in zip(places, originals, strict=True):
             setattr(owner, name, work)
-    return {**spent, "the rest (rows, planning, reading back)": total - sum(spent.values())}
+    return {**spent, "the rest (rows, planning, loading back)": total - sum(spent.values())}
 
 
 def engine_ms(drones: int, runs: int) -> list[float]:
@@ -107,7 +107,7 @@ def engine_ms(drones: int, runs: int) -> list[float]:
 
 def compare(runs: int, drones: int, root: Path) -> dict[str, Any]:
     """The two sweeps' CPU (every round), whether the rows agree, and the engine's times."""
-    for rcs in ([1000.0], RANGES):  # compile or load the kernel and the reading
+    for rcs in ([1000.0], RANGES):  # compile or load the kernel and the scan
         timed_sweep(rcs, 2, drones, root / f"warm{drones}-{len(rcs)}")
     ones, eights = [], []
     for i in range(ROUNDS):  # the host's speed drifts: interleaved, each first in turn

@@ -22,9 +22,9 @@ from typer.testing import CliRunner
 from sarlink import ConfigError, Experiment, Mission, load, sweep
 from sarlink.cli import app
 from sarlink.config import mission_hash
+from sarlink.design import Decision, DesignAnswer, DesignRequest, design
+from sarlink.design.sequential import worse
 from sarlink.metrics import summarize
-from sarlink.sizing import DesignAnswer, DesignRequest, Verdict, design
-from sarlink.sizing.sequential import worse
 
 SMALL = Mission.build(reading="sarlink-2", size=2000.0, rc=500.0)
 """The small setting the expectations below were measured on, under the reading of then."""
@@ -57,7 +57,7 @@ def test_a_requirement_no_team_can_reach_is_not_reachable(tmp_path: Path) -> Non
         assert planner.status == "not reachable"
         assert planner.smallest is None and planner.undecided == ()
         assert [s.drones for s in planner.team_sizes] == [1, 2, 3, 4]
-        assert all(s.verdict is Verdict.FAILS for s in planner.team_sizes)
+        assert all(s.verdict is Decision.FAILS for s in planner.team_sizes)
     bound = math.pi * 1000.0**2 / 4000.0**2
     runs = candidate_runs(tmp_path, answer)
     far = np.hypot(runs["target_x"] - 2000.0, runs["target_y"] - 2000.0) > 1000.0
@@ -91,7 +91,7 @@ def test_mtsp_with_two_drones_always_succeeds_by_the_flight_budget(tmp_path: Pat
     (mtsp,) = answer.planners
     assert mtsp.status == "reached" and mtsp.smallest == 2
     assert mtsp.chosen is not None and mtsp.chosen.successes == mtsp.chosen.runs
-    assert mtsp.team_sizes[0].drones == 1 and mtsp.team_sizes[0].verdict is Verdict.FAILS
+    assert mtsp.team_sizes[0].drones == 1 and mtsp.team_sizes[0].verdict is Decision.FAILS
 
 
 # -- the adaptive answer against a brute-force sweep ---------------------------------------------
@@ -274,3 +274,15 @@ def test_a_killed_design_resumes_to_the_same_answer(
     again = design(full.request, tmp_path, progress=False)
     assert again.to_json()["planners"] == full.to_json()["planners"]
     assert again.runs_simulated == full.runs_used - stored
+
+
+def test_sarlink_design_and_at_range_stay_the_functions_beside_their_modules() -> None:
+    """Importing ``sarlink.design`` or ``sarlink.at_range`` (the modules) would bind the
+    package's names to them; ``sarlink.design(...)`` still calls the function."""
+    import sarlink
+    import sarlink.at_range
+    import sarlink.design.answer
+    from sarlink.at_range import at_range
+
+    assert sarlink.design is design and sarlink.at_range is at_range
+    assert type(sys.modules["sarlink.design"]).__name__ == "module"  # still importable

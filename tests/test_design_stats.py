@@ -9,16 +9,16 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 from scipy.stats import binom
 
-from sarlink.metrics import wilson
-from sarlink.sizing.sequential import (
+from sarlink.design.sequential import (
+    Decision,
     Schedule,
-    Verdict,
+    decide,
     lower_bound,
     not_worse_by,
     upper_bound,
-    verdict,
     worse,
 )
+from sarlink.metrics import wilson
 
 counts = st.integers(1, 3000).flatmap(lambda n: st.tuples(st.integers(0, n), st.just(n)))
 errors = st.sampled_from([0.025, 0.005, 1e-4])
@@ -55,12 +55,12 @@ def test_a_team_that_meets_has_its_95_wilson_lower_bound_at_the_requirement(
         kn: tuple[int, int], required: float) -> None:
     k, n = kn
     for looks in (1, 8):
-        v = verdict(k, n, required, meets_error=0.025 / looks, fails_error=0.025 / looks,
+        v = decide(k, n, required, meets_error=0.025 / looks, fails_error=0.025 / looks,
                     final=False)
         lo, hi = wilson(k, n)
-        if v is Verdict.MEETS:
+        if v is Decision.MEETS:
             assert lo >= required
-        if v is Verdict.FAILS:
+        if v is Decision.FAILS:
             assert hi < required
 
 
@@ -70,14 +70,14 @@ def _misjudged(p: float, required: float, schedule: Schedule, error: float,
     rng = np.random.default_rng(7)
     looks = len(schedule.looks)
     outcomes = rng.random((trials, schedule.cap)) < p
-    wrong = Verdict.MEETS if p < required else Verdict.FAILS
+    wrong = Decision.MEETS if p < required else Decision.FAILS
     count = 0
     for row in outcomes:
         cumulative = np.cumsum(row)
         for n in schedule.looks:
-            v = verdict(int(cumulative[n - 1]), n, required, meets_error=error / looks,
+            v = decide(int(cumulative[n - 1]), n, required, meets_error=error / looks,
                         fails_error=error / looks, final=n == schedule.cap)
-            if v is not Verdict.OPEN:
+            if v is not Decision.OPEN:
                 count += v is wrong
                 break
     return count / trials

@@ -17,7 +17,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 PUBLIC = ("sarlink", "sarlink.config", "sarlink.simulation", "sarlink.result", "sarlink.engine",
           "sarlink.planners", "sarlink.mtsp", "sarlink.metrics", "sarlink.storage",
-          "sarlink.execution", "sarlink.sizing", "sarlink.paper", "sarlink.playback",
+          "sarlink.execution", "sarlink.design", "sarlink.paper", "sarlink.playback",
           "sarlink.plots", "sarlink.plantime", "sarlink.engine.hooks", "sarlink.engine.observation",
           "sarlink.engine.params", "sarlink.engine.build", "sarlink.testing", "sarlink.env")
 """The modules of the API reference (docs/api/)."""

@@ -91,7 +91,7 @@ OWN_MEANING = {"design": {"--planner"}, "export": {"--altitude"}, "summarize": {
 """Options named like a mission parameter that mean something else: design's --planner
 chooses the planners to compare (a field of the request); export's --altitude is the flight
 height written into the drones' files, not the radio model's channel.altitude; summarize's
---rc reads stored runs at a range they were not flown at (their notification staircase)."""
+--rc evaluates stored runs at a range they were not flown at (their notification staircase)."""
 
 
 def test_the_table_declares_each_flag_once_with_its_parameter_s_range() -> None:

@@ -29,7 +29,6 @@ from sarlink.engine.streams import plan_seed
 from sarlink.execution import sweep_all
 from sarlink.metrics import MEASURES, run_values, summarize, wilson
 from sarlink.paper import ReproductionResult, check_all, load_runs, reproduce, tally
-from sarlink.paper import findings as claims
 from sarlink.paper.evidence import Estimate, Outcome
 from sarlink.paper.experiments import (
     DRONES,
@@ -41,7 +40,7 @@ from sarlink.paper.experiments import (
     plan_time_missions,
 )
 from sarlink.paper.figures import FIGURES, fig3
-from sarlink.paper.findings import CLAIMS, Claim
+from sarlink.paper.findings import CLAIMS, Claim, fig1, section3
 from sarlink.planners import PAPER_PLANNERS, RulePlanner, get_planner, planner_names, registry
 from sarlink.planners.patterns import PATTERNS
 
@@ -100,7 +99,7 @@ def test_stored_tables_equal_the_summaries_recomputed_from_the_runs(
 
 
 def test_the_range_figure_agrees_with_the_flown_ranges(quick: ReproductionResult) -> None:
-    """Fig. 10's P_s at a continuous range, read from one flight per run, equals the main
+    """Fig. 10's P_s at a continuous range, evaluated from one flight per run, equals the main
     table's at the three ranges flown; the teams flown per range are not in it."""
     curve = pd.read_csv(quick.out / "tables" / "range_curve.csv")
     main = pd.read_csv(quick.out / "tables" / "main.csv")
@@ -308,32 +307,32 @@ _FAST = {"mtsp": lambda n: 0.2, "covb": lambda n: 0.001, "conb": lambda n: 0.003
 
 CASES = [
     # Fig. 1
-    Case(claims.covb_plans_fastest, _plan(_FAST), HOLDS, "CovB a third of ConB's time"),
-    Case(claims.covb_plans_fastest, _plan(_FAST | {"conb": lambda n: 0.0005}), CONTRADICTED,
+    Case(fig1.covb_plans_fastest, _plan(_FAST), HOLDS, "CovB a third of ConB's time"),
+    Case(fig1.covb_plans_fastest, _plan(_FAST | {"conb": lambda n: 0.0005}), CONTRADICTED,
          "ConB twice as fast"),
-    Case(claims.covb_plans_fastest, _plan(_FAST | {"conb": lambda n: 0.001}), UNDECIDED,
+    Case(fig1.covb_plans_fastest, _plan(_FAST | {"conb": lambda n: 0.001}), UNDECIDED,
          "ConB as fast, repeats scattered alike"),
-    Case(claims.mtsp_plan_time_flat, _plan(_FAST), HOLDS, "constant"),
-    Case(claims.mtsp_plan_time_flat, _plan(_FAST | {"mtsp": lambda n: 0.01 * n}),
+    Case(fig1.mtsp_plan_time_flat, _plan(_FAST), HOLDS, "constant"),
+    Case(fig1.mtsp_plan_time_flat, _plan(_FAST | {"mtsp": lambda n: 0.01 * n}),
          CONTRADICTED, "proportional to N_m"),
-    Case(claims.mtsp_plan_time_flat, _plan(_FAST, (0.25, 1.0, 4.0)), UNDECIDED,
+    Case(fig1.mtsp_plan_time_flat, _plan(_FAST, (0.25, 1.0, 4.0)), UNDECIDED,
          "constant, but repeats a factor 16 apart"),
-    Case(claims.conb_plan_time_grows, _plan(_FAST | {"conb": lambda n: 0.001 * n}), HOLDS,
+    Case(fig1.conb_plan_time_grows, _plan(_FAST | {"conb": lambda n: 0.001 * n}), HOLDS,
          "proportional to N_m"),
-    Case(claims.conb_plan_time_grows, _plan(_FAST | {"conb": lambda n: 0.01 / n}),
+    Case(fig1.conb_plan_time_grows, _plan(_FAST | {"conb": lambda n: 0.01 / n}),
          CONTRADICTED, "inversely proportional"),
-    Case(claims.conb_plan_time_grows, _plan(_FAST), UNDECIDED, "constant"),
-    Case(claims.hybrid_plan_times, _plan(_FAST | _HYBRIDS), HOLDS,
+    Case(fig1.conb_plan_time_grows, _plan(_FAST), UNDECIDED, "constant"),
+    Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS), HOLDS,
          "grow with N_m, like ConB's at 22 drones, 2.5 times CovB's"),
-    Case(claims.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {"concov": lambda n: 0.001}),
+    Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {"concov": lambda n: 0.001}),
          CONTRADICTED, "ConCov as fast as CovB, flat"),
-    Case(claims.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {
+    Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {
         "concov": lambda n: 0.0011 * n}, (0.1, 1.0, 10.0)), UNDECIDED,
          "repeats a factor 100 apart"),
-    Case(claims.concov_plans_slower_than_covb, _plan(_FAST | _HYBRIDS), HOLDS, "slower"),
-    Case(claims.concov_plans_slower_than_covb,
+    Case(section3.concov_plans_slower_than_covb, _plan(_FAST | _HYBRIDS), HOLDS, "slower"),
+    Case(section3.concov_plans_slower_than_covb,
          _plan(_FAST | _HYBRIDS | {"concov": lambda n: 0.0005}), CONTRADICTED, "faster"),
-    Case(claims.concov_plans_slower_than_covb,
+    Case(section3.concov_plans_slower_than_covb,
          _plan(_FAST | _HYBRIDS | {"concov": lambda n: 0.001}), UNDECIDED, "as fast"),
 ]
 """Fig. 1's claims, on made-up timings (the claims on runs: tests/test_claims.py)."""

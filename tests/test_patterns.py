@@ -344,7 +344,7 @@ def test_design_considers_the_patterns_and_meets_where_parallel_track_must_find(
     """With one hop to the BS from anywhere (r_c beyond the area's diagonal) success is
     detection, and a parallel track team whose every route ends within t_d detects every
     target: that team meets any P_s below 1, so the smallest team found is no larger."""
-    from sarlink.sizing import DesignRequest, design
+    from sarlink.design import DesignRequest, design
 
     base = Mission.build(size=2000.0, rc=2900.0, r=250.0)
     assert {p.name for p in PATTERNS} <= set(DesignRequest(td=500.0, ps=0.5).planners)

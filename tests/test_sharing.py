@@ -22,7 +22,7 @@ from sarlink.engine import sharing
 from sarlink.execution import sweep, sweep_all
 from sarlink.planners import registry
 from sarlink.simulation import prepare
-from test_ranges import same_outcome
+from test_critical_ranges import same_outcome
 
 sys.path.insert(0, str(Path(__file__).parent / "plugins"))
 from homebound import HOMEBOUND
@@ -106,7 +106,7 @@ def test_sweeps_with_and_without_reporting_share_their_runs(
     if planner == "conb":  # flown per range: 6 runs at 2 ranges, and some reporting runs
         assert flown.count("continue") == 6 * 2
         assert flown.count("report") < 6 * 2
-    else:  # main read at every range as it flies; reporting runs flown where one reports
+    else:  # main scanned at every range as it flies; reporting runs flown where one reports
         assert flown.count("continue") == 0 and flown.count("report") < 6 * 2
     *together, again = sweep_all([(main, tmp_path / "main"), (report, tmp_path / "report"),
                                   (main, tmp_path / "main-again")], workers=1, progress=False)

@@ -263,7 +263,7 @@ def test_result_files_read_with_pandas_as_sarlink_loads_them(tmp_path: Path) -> 
 
 @pytest.mark.parametrize("staircase", [False, True])
 def test_a_table_built_whole_equals_one_built_from_its_rows(staircase: bool) -> None:
-    """run_table builds its outcome columns whole; Arrow's own reading of the rows
+    """run_table builds its outcome columns whole; Arrow's own conversion of the rows
     (``Table.from_pylist`` of :meth:`RunResult.row`, each with its own interpolation at the
     horizon) gives the same table, types included: runs stopped early (NaN records), never
     detected and with their staircases."""

@@ -10,12 +10,12 @@ Tasks that may share their flights are one job (:mod:`sarlink.engine.sharing`), 
 rows as flying each: the same runs, with the same seed, of the points of a team that may fly
 the same at every range (a route planner, a rule declared ``range_free`` such as CovB, drones
 that do not report: see :attr:`sarlink.engine.run.Prepared.range_free`) that differ only in
-``rc``, each run flown once and read at every range (:mod:`sarlink.engine.ranges`); and of a
-mission with drones that report and the same mission without reporting, whose runs the former
-are taken from wherever no drone reports, in whichever folders they are (the paper's ``main``
-and ``report``). A job of one range flies as before, unless the experiment asks for the
-notification staircase (``Experiment.staircase``): a flight read at several ranges costs more
-than a plain one, which only a job of several ranges earns back.
+``rc``, each run flown once and scanned at every range (:mod:`sarlink.engine.critical_ranges`);
+and of a mission with drones that report and the same mission without reporting, whose runs
+the former are taken from wherever no drone reports, in whichever folders they are (the
+paper's ``main`` and ``report``). A job of one range flies as before, unless the experiment
+asks for the notification staircase (``Experiment.staircase``): a flight scanned at several
+ranges costs more than a plain one, which only a job of several ranges earns back.
 """
 
 from __future__ import annotations
@@ -189,7 +189,7 @@ def _compiled(part: tuple[str, ...]) -> bool:
 
         return on_disk(_ga_kernel)
     if part[0] == "ranges":
-        from sarlink.engine.ranges import critical
+        from sarlink.engine.critical_ranges import critical
 
         return on_disk(critical)
     return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2])))
@@ -198,7 +198,7 @@ def _compiled(part: tuple[str, ...]) -> bool:
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
-    (one per rule and radio model), and the reading of the staircase if a job asks for it
+    (one per rule and radio model), and the scan of the staircase if a job asks for it
     whose team may fly once for every range (after the kernels, whose first compile also
     compiles what they share; the others' rows have no staircase)."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()

@@ -52,7 +52,7 @@ class RunResult:
     connected_cum: np.ndarray
     trajectory: Trajectory | None = None
     notify_times: np.ndarray | None = None
-    """A range-free run's notification staircase (:mod:`sarlink.engine.ranges`), when asked
+    """A range-free run's notification staircase (:mod:`sarlink.engine.critical_ranges`), when asked
     for: at any range ``r_c`` the BS is notified at ``notify_times[j]`` for the first ``j``
     with ``notify_rc2[j] <= r_c * r_c`` (never, if there is none); None otherwise."""
     notify_rc2: np.ndarray | None = None

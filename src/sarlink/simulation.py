@@ -50,7 +50,7 @@ def check_mission(mission: Mission) -> None:
 def warm_up(planner: str, radio: str, *, ranges: bool = False) -> None:
     """Compile (or load from the disk cache) the kernel of ``planner``'s rule and the radio
     model ``radio``, by flying one tiny run that needs no plan; with ``ranges``, also the
-    reading of one flight's staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`),
+    scan of one flight's staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`),
     from a drone on a route, which flies the same at every range under any rule's kernel."""
     rule = get_planner(planner).rule
     mission = Mission.build(planner=planner, drones=1, horizon=10.0, radio=radio,

@@ -9,7 +9,7 @@ Layout of a results folder::
 ``<point>`` is a hash of the point's whole mission, and a file's name holds its run range, so
 a rerun recognises finished work whatever the grid order, chunk size or number of workers.
 Every file is written under a temporary name in its folder, flushed to disk and renamed, so a
-file with a final name is complete; damage done to it later is caught on reading (Parquet page
+file with a final name is complete; damage done to it later is caught when loaded (Parquet page
 checksums, the point and seed in its metadata, the exact run indices) and such a file is
 neither loaded nor counted as done.
 """
@@ -360,7 +360,7 @@ def open_store(out_dir: str | Path, experiment: Experiment) -> Iterator[Store]:
         yield Store(root, experiment.seed, points)
 
 
-# -- reading -----------------------------------------------------------------------------------
+# -- loading -----------------------------------------------------------------------------------
 
 
 def read_manifest(out_dir: str | Path) -> dict[str, Any]:

@@ -16,15 +16,15 @@ from sarlink.config import ConfigError
 from sarlink.config.region import area_label
 
 if TYPE_CHECKING:
-    from sarlink.sizing import DesignAnswer, DesignRequest, Estimate, PlannerAnswer
-    from sarlink.sizing.ranges import PlannerRanges
+    from sarlink.design import CandidateEstimate, DesignAnswer, DesignRequest, PlannerAnswer
+    from sarlink.design.needed_range import PlannerRanges
 
 _OPTION_NAMES = {"planners": "--planner", "options": "--option"}
 
 
 def _as_option(message: str) -> str:
     """A request error with its field written as the option the user typed (``--max-drones``)."""
-    from sarlink.sizing import DesignRequest
+    from sarlink.design import DesignRequest
 
     def rename(match: re.Match[str]) -> str:
         field = match[1]
@@ -54,7 +54,7 @@ def _options(specs: list[str]) -> dict[str, list[Any]]:
     return options
 
 
-def _probability(e: Estimate) -> str:
+def _probability(e: CandidateEstimate) -> str:
     return f"{e.p:.3f} [{e.lo:.3f}, {e.hi:.3f}]"
 
 
@@ -141,7 +141,7 @@ def _range_free_request(flags: MissionFlags) -> bool:
         return True
     try:
         return "rc" not in read_toml(config).get("channel", {})
-    except (ConfigError, OSError):  # the mission's own reading names the flag and the error
+    except (ConfigError, OSError):  # the mission's own loading names the flag and the error
         return False
 
 
@@ -225,8 +225,8 @@ def design(
 ) -> None:
     """Find the smallest team, planner and setting whose P_s(t_d) meets a requirement;
     without --rc, the smallest range each team size needs."""
-    from sarlink.sizing import DesignRequest
-    from sarlink.sizing import design as run_design  # pandas: only for this command
+    from sarlink.design import DesignRequest
+    from sarlink.design import design as run_design  # pandas: only for this command
 
     with user_errors():
         if _range_free_request(flags):
@@ -271,11 +271,11 @@ def _design_range(flags: MissionFlags, td: float, ps: float, planner: list[str] 
                   out: Path, workers: int | None, scheduler: str | None, dask_local: bool,
                   json: bool, sizes: str | None, range_runs: int) -> None:
     """``sarlink design`` without ``--rc``: the range each team size needs
-    (:mod:`sarlink.sizing.ranges`)."""
+    (:mod:`sarlink.design.needed_range`)."""
+    from sarlink.design import DesignRequest
+    from sarlink.design.needed_range import range_design, to_json
     from sarlink.execution import start_workers
     from sarlink.planners import get_planner
-    from sarlink.sizing import DesignRequest
-    from sarlink.sizing.ranges import range_design, to_json
 
     if option and _options(option):
         raise ConfigError("--option applies with --rc only: without it the design finds the "

@@ -54,7 +54,7 @@ def summarize(
     csv: Annotated[bool, typer.Option("--csv", help="print CSV: a row per point and t_d")] = False,
     json: Annotated[bool, typer.Option("--json", help="print JSON records")] = False,
     rc: Annotated[float | None, typer.Option(
-        help="read every run at this communication range, m, flown or not (runs stored with "
+        help="evaluate every run at this communication range, m, flown or not (runs stored with "
              "their notification staircase; reachability and connectivity only where flown)")
     ] = None,
 ) -> None:
@@ -71,7 +71,7 @@ def summarize(
         by = list(read_manifest(results)["experiment"]["grid"])
         runs = load(results)
         if rc is not None:
-            from sarlink.ranges import at_range
+            from sarlink.at_range import at_range
 
             runs = at_range(runs, rc)
         try:

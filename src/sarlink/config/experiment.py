@@ -79,7 +79,7 @@ class Experiment(Checked):
                                        description="flat parameter -> values to try")
     staircase: bool = Field(False, description=(
         "rows of teams that fly the same at every range carry their notification staircase "
-        "(notify_times, notify_rc2), which sarlink.at_range reads at any range; costs most "
+        "(notify_times, notify_rc2), which sarlink.at_range evaluates at any range; costs most "
         "of a flight per run unless the grid has several rc of the point"))
 
     @classmethod

@@ -227,7 +227,7 @@ def _read_raster(path: Path, frame: Frame) -> tuple[Zone, ...]:
     try:
         import rasterio
     except ImportError:
-        raise ConfigError(f"{path}: reading a raster prior needs rasterio "
+        raise ConfigError(f"{path}: a raster prior needs rasterio "
                           "(pip install 'sarlink[raster]')") from None
     try:
         with warnings.catch_warnings():  # a raster without a CRS is refused below

@@ -56,11 +56,11 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
 
 
 def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
-                 reads_ranges: bool = True) -> str:
+                 scans_ranges: bool = True) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only) and
-    ``radio``. The reading at several ranges (:mod:`sarlink.engine.ranges`, inlined: most
+    ``radio``. The range scan (:mod:`sarlink.engine.critical_ranges`, inlined: most
     of a kernel's compile time after the rule) is compiled only into a kernel whose team may
-    fly the same at every range, and if ``reads_ranges``."""
+    fly the same at every range, and if ``scans_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}
     defaults: dict[str, Callable[..., Any]] = {
         "rule_prepare": none.prepare, "rule_due": none.due, "rule_decide": none.decide}
@@ -75,7 +75,7 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
     range_free = radio.range_free and (rule is None or rule.range_free)
     lines += [f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
-              f"READS_RANGES = {reads_ranges and range_free}",
+              f"SCANS_RANGES = {scans_ranges and range_free}",
               "# ---- end of plug-ins ----", ""]
     return "\n".join(lines)
 
@@ -101,7 +101,7 @@ def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: boo
                   stepping: bool = False) -> str:
     """The text of the kernel module for ``rule`` and ``radio`` (its stepping form if
     ``stepping``)."""
-    block = plugin_block(rule, radio, reads_ranges=not stepping)  # an environment never reads
+    block = plugin_block(rule, radio, scans_ranges=not stepping)  # an environment never scans
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)

@@ -27,7 +27,7 @@ def unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
 @njit(cache=True, inline="always", error_model="numpy")
 def d2(xa: float, ya: float, za: float, xb: float, yb: float, zb: float) -> float:
     """The squared distance from node a to node b, in the link pass's arithmetic
-    (:func:`sarlink.engine.graph.links`), whose bits every reading of a link must match."""
+    (:func:`sarlink.engine.graph.links`), whose bits every other test of a link must match."""
     dx = xa - xb
     dy = ya - yb
     dz = za - zb

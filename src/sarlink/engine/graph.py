@@ -2,7 +2,7 @@
 
 Adjacency is kept as bitsets: row ``a`` of ``adj`` is ``W = ceil((N + 2) / 64)`` words whose
 bit ``b`` says whether nodes ``a`` and ``b`` are linked; a breadth-first search then costs a
-few word operations per node instead of a scan of a boolean matrix. Node indices: drones
+few word operations per node instead of a pass over a boolean matrix. Node indices: drones
 ``0 .. N-1``, the BS ``N``, the target ``N + 1`` (a node only for reachability: it never relays).
 """
 

@@ -73,7 +73,7 @@ class DistributedRule:
     only the rules a choice reaches). ``range_free`` declares that its decisions never read
     the links or the range (``obs.adj``, ``obs.routed``, ``obs.spread``, ``obs.knows``,
     ``obs.rc``): a team of it flies the same at every range and is flown once for all
-    of them (:mod:`sarlink.engine.ranges`); default False, the safe answer.
+    of them (:mod:`sarlink.engine.critical_ranges`); default False, the safe answer.
     ``ignores_reporting`` declares that its hooks never read ``p.on_detect``,
     ``p.reporters`` or ``p.stop``: a run of it whose drones report is then the same flight as
     without reporting until a drone reports, and is taken from that run where none ever does
@@ -109,8 +109,8 @@ class RadioModel:
     ``params`` maps a mission to the model's parameter array
     ``rp`` (default: none: the built-in models read the mission's ``channel`` scalars from
     ``p``). ``range_free`` declares that a link exists iff ``d² ≤ r_c² f`` with fades ``f``
-    drawn independently of ``r_c``, as :mod:`sarlink.engine.ranges` redraws them: only the
-    built-in log-normal model's hooks do (a plug-in declaring it is refused), so plug-in
+    drawn independently of ``r_c``, as :mod:`sarlink.engine.critical_ranges` redraws them: only
+    the built-in log-normal model's hooks do (a plug-in declaring it is refused), so plug-in
     models are flown at every range.
     """
 
@@ -134,7 +134,7 @@ class RadioModel:
             if tuple(python_function(f) for f in (self.init, self.update, self.nominal)) != tuple(
                     python_function(f) for f in ours) or self.params is not None:
                 raise ConfigError(f"radio model {self.name!r}: range_free is only for the "
-                                  "built-in log-normal hooks (sarlink.engine.ranges redraws "
+                                  "built-in log-normal hooks (engine.critical_ranges redraws "
                                   "their fades); leave it False")
 
     def hooks(self) -> dict[str, Callable[..., Any]]:

@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import area, graph, motion, ranges, records, sensing
+from sarlink.engine import area, critical_ranges, graph, motion, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -47,7 +47,7 @@ from sarlink.engine.rules.none import prepare as rule_prepare
 
 RULE_DUE = False
 RULE_NEAR = False
-READS_RANGES = True
+SCANS_RANGES = True
 # ---- end of plug-ins ----
 # isort: on
 
@@ -115,9 +115,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     may_settle = radio_static(p, rp) and not p.record  # a recorded run keeps every step
     polygon = edges.shape[0] > 0
     home_max = far if polygon else motion.farthest_home(p)
-    reading = READS_RANGES and r2s.shape[0] > 0
-    if READS_RANGES:
-        rd = ranges.new_reading(r2s, n, mp, cp_steps.shape[0])
+    scanning = SCANS_RANGES and r2s.shape[0] > 0
+    if SCANS_RANGES:
+        sc = critical_ranges.new_scan(r2s, n, mp, cp_steps.shape[0])
 
     for k in range(p.n_steps + 1):
         t = k * p.dt
@@ -134,13 +134,13 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
-        if not reading:  # a reading has a link pass of its own, at every range
+        if not scanning:  # a range scan has a link pass of its own, at every range
             graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         reachable, connected = False, 0
-        if READS_RANGES and reading:  # compiled only where the team may be range-free (build)
-            ranges.read_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0, knows, spread,
-                             stack, rd, near, push)
-        if not (reading or p.trace):  # a traced flight is read afterwards (engine.ranges)
+        if SCANS_RANGES and scanning:  # compiled only where the team may be range-free (build)
+            critical_ranges.scan_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0,
+                                      knows, spread, stack, sc, near, push)
+        if not (scanning or p.trace):  # a traced flight is scanned afterwards (critical_ranges)
             graph.bs_component(adj, n, routed, stack)
             if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
                 t_not = t
@@ -152,7 +152,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             records.record_positions(k, px, py, traj_pos)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
                 p.stop == STOP_NOTIFIED and t_not >= 0.0) or (
-                READS_RANGES and reading and not rd.going.any()):
+                SCANS_RANGES and scanning and not sc.going.any()):
             break
         acc_reach += p.dt if reachable else 0.0
         acc_conn += p.dt * connected / n
@@ -164,8 +164,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             records.carry_records(k + 1, p.n_steps, cp_steps, ci, reach_cum, conn_cum,
                                   acc_reach, acc_conn, p.dt if reachable else 0.0,
                                   p.dt * connected / n)
-            if READS_RANGES and reading:
-                ranges.carry_reading(k + 1, p, cp_steps, ci, rd)
+            if SCANS_RANGES and scanning:
+                critical_ranges.carry_scan(k + 1, p, cp_steps, ci, sc)
             ci = cp_steps.shape[0]
             break
 
@@ -194,7 +194,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan
     kk = min(traj_pos.shape[0], k + 1)  # a run stopped early records fewer steps
-    at_ranges = ranges.read_records(rd) if READS_RANGES else records.no_ranges(cp_steps)
+    at_ranges = critical_ranges.scan_records(sc) if SCANS_RANGES else records.no_ranges(cp_steps)
     return RunRecord(t_det, t_not, detector, t_not >= 0.0 and t_not == t_det,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],

@@ -69,9 +69,9 @@ class Params(NamedTuple):
     record: bool
     trace: bool
     """Record the drones' positions at every step and nothing else (the run may still settle):
-    what :mod:`sarlink.engine.ranges` reads a range-free flight's notification staircase
-    from. A traced flight finds no routes and floods no knowledge (its records, its
-    notification and a stop at it are not kept: the reading at each range gives them)."""
+    what :mod:`sarlink.engine.critical_ranges` finds a range-free flight's notification
+    staircase from. A traced flight finds no routes and floods no knowledge (its records, its
+    notification and a stop at it are not kept: the scan at each range gives them)."""
     on_detect: int
     reporters: int
     conb_check: int

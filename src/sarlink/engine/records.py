@@ -32,8 +32,8 @@ class Track(NamedTuple):
 
 
 class AtRanges(NamedTuple):
-    """A range-free flight's records at each range it was read at as it flew
-    (:mod:`sarlink.engine.ranges`), in the order of the ranges given; empty otherwise."""
+    """A range-free flight's records at each range it was scanned at as it flew
+    (:mod:`sarlink.engine.critical_ranges`), in the order of the ranges given; empty otherwise."""
 
     notified: np.ndarray
     """Per range: the step of the notification (``-1``: never)."""
@@ -60,13 +60,13 @@ class RunRecord(NamedTuple):
     """The trajectory, empty (zero steps) unless the run was recorded; a traced run
     (``Params.trace``) has only the positions."""
     at_ranges: AtRanges
-    """The records at each range of a flight read at several ranges (then the run's own
+    """The records at each range of a flight scanned at several ranges (then the run's own
     notification, immediacy and records above are not kept)."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def no_ranges(cp_steps: np.ndarray) -> AtRanges:
-    """The records at no range: a run not read at several ranges."""
+    """The records at no range: a run not scanned at several ranges."""
     return AtRanges(np.full(0, -1, dtype=np.int64), np.empty((0, cp_steps.shape[0])),
                     np.empty((0, cp_steps.shape[0])))
 

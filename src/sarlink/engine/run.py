@@ -30,10 +30,10 @@ from sarlink.engine.codes import (
     SHADOWING_CODES,
     STOP_CODES,
 )
+from sarlink.engine.critical_ranges import Critical, critical
 from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
-from sarlink.engine.ranges import Critical, critical
 from sarlink.engine.records import AtRanges, RunRecord
 from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
@@ -117,11 +117,11 @@ class Prepared:
         return kernel_for(self.steering.rule, get_radio(self.mission.radio))
 
     def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
-                  traced_at: float | None = None, read_at: Sequence[float] = ()
+                  traced_at: float | None = None, scan_at: Sequence[float] = ()
                   ) -> tuple[object, ...]:
         """The kernel's arguments for one run from its random streams and initial conditions;
-        ``traced_at``: a traced flight (``Params.trace``) at that range instead; ``read_at``:
-        a flight read at each of those ranges as it flies (its radio at ``r_c = 1``)."""
+        ``traced_at``: a traced flight (``Params.trace``) at that range instead; ``scan_at``:
+        a flight scanned at each of those ranges as it flies (its radio at ``r_c = 1``)."""
         n = self.mission.team.drones
         if scenario.positions is None:
             pos0 = np.tile(np.asarray(self.mission.area.bs_xy, dtype=float), (n, 1))
@@ -130,28 +130,28 @@ class Prepared:
         p = self.params._replace(record=trajectory)
         if traced_at is not None:
             p = p._replace(rc=traced_at, trace=True)
-        if read_at:
+        if scan_at:
             p = p._replace(rc=1.0)
         return (p, self.radio_params,
                 float(scenario.target[0]), float(scenario.target[1]), pos0,
                 takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
                                  streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, streams.rule,
-                self.edges, self.nav, self.far, np.array([rc * rc for rc in read_at]))
+                self.edges, self.nav, self.far, np.array([rc * rc for rc in scan_at]))
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
-               traced_at: float | None = None, read_at: Sequence[float] = ()) -> RunRecord:
+               traced_at: float | None = None, scan_at: Sequence[float] = ()) -> RunRecord:
         """The kernel's record of one run from its random streams and initial conditions.
 
-        A team with no distributed drone (mTSP-ConB with ``N_m <= N_r``) is read at several
+        A team with no distributed drone (mTSP-ConB with ``N_m <= N_r``) is scanned at several
         ranges by the kernel of routes: its rule never acts (:attr:`range_free`), and only
-        the kernels of range-free teams carry the reading (``READS_RANGES``, engine.build).
+        the kernels of range-free teams carry the range scan (``SCANS_RANGES``, engine.build).
         """
         kernel = self.kernel
-        if read_at and not self.distributed.any():
+        if scan_at and not self.distributed.any():
             kernel = kernel_for(None, get_radio(self.mission.radio))
         args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at,
-                              read_at=read_at)
+                              scan_at=scan_at)
         if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
             return kernel(*args)
         try:
@@ -240,8 +240,8 @@ class Prepared:
         """Run ``run`` at every range of ``rcs`` from one flight (a range-free mission only):
         the same results, bit for bit, as :meth:`run` with the mission at each range; with
         ``staircase``, each also with its notification staircase
-        (:attr:`sarlink.RunResult.notify_times`), read after the flight from its positions
-        (:meth:`critical`); without it, the flight is read at each range as it flies."""
+        (:attr:`sarlink.RunResult.notify_times`), found after the flight from its positions
+        (:meth:`critical`); without it, the flight is scanned at each range as it flies."""
         p = self.params
         if staircase:
             scenario, rec, crit = self.critical(seed, run, rcs, scenario=scenario)
@@ -250,7 +250,7 @@ class Prepared:
             own = self._own(seed, run)
             own._check_range_free()
             streams, scenario = own._start(seed, run, scenario)
-            rec = own.record(streams, scenario, read_at=rcs)
+            rec = own.record(streams, scenario, scan_at=rcs)
             at = rec.at_ranges
         target = (float(scenario.target[0]), float(scenario.target[1]))
         out = []

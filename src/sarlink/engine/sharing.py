@@ -4,7 +4,7 @@ the same, bit for bit, as flying it alone.
 Two kinds of sharing, both exact:
 
 - **One team at several ranges.** A range-free team (:attr:`Prepared.range_free`) flies the
-  same at every ``r_c``: each run is flown once and read at every range
+  same at every ``r_c``: each run is flown once and scanned at every range
   (:meth:`Prepared.run_ranges`).
 - **A run whose drones report, from the same run without reporting.** ``on_detect = report``
   changes what a drone does only once it knows where the target is while the BS does not

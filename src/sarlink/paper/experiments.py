@@ -29,12 +29,12 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from sarlink.at_range import range_curve
 from sarlink.config import Experiment, Mission
 from sarlink.engine.streams import plan_seed
 from sarlink.metrics import run_values, success_curve, summarize
 from sarlink.mtsp import plan_for
 from sarlink.planners import PAPER_PLANNERS, planner_names
-from sarlink.ranges import range_curve
 
 __all__ = [
     "BEYOND",
@@ -258,7 +258,7 @@ EXPERIMENTS = {e.name: e for e in (
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
-:data:`CURVE_TDS`), ``range_curve`` (:func:`sarlink.ranges.range_curve`) and ``main_runs``
+:data:`CURVE_TDS`), ``range_curve`` (:func:`sarlink.at_range.range_curve`) and ``main_runs``
 (every run's values, ``run_values``, for the paired statistics of the claims; ``miss`` and
 ``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too."""
 

@@ -500,7 +500,7 @@ FIGURES = {f.number: f for f in (
     FigureSpec(RANGE_FIG, "Beyond the paper: how much range a team needs. P_s(t_d) against a "
                "continuous communication range, 100-3000 m, for the planners whose drones fly "
                "the same at every range (mTSP, CovB; mTSP-ConB where all its drones fly the "
-               "plan), read from the runs of Figs. 2-6 (one flight per run, its notification "
+               "plan), evaluated from the runs of Figs. 2-6 (one flight per run, its notification "
                "staircase); dotted: the paper's three ranges.", ("range_curve",), fig10,
                _fig10_values),
 )}

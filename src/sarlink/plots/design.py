@@ -10,10 +10,10 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from sarlink.sizing import DesignAnswer, Estimate
+from sarlink.design import CandidateEstimate, DesignAnswer
 
 
-def _errorbar(ax: plt.Axes, x: Sequence[float], estimates: Sequence[Estimate],
+def _errorbar(ax: plt.Axes, x: Sequence[float], estimates: Sequence[CandidateEstimate],
               **style: Any) -> None:
     p = np.array([e.p for e in estimates])
     lo = np.array([e.lo for e in estimates])

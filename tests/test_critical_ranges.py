@@ -1,6 +1,6 @@
-"""Critical ranges (sarlink.engine.ranges) against direct flights at the same ranges.
+"""Critical ranges (sarlink.engine.critical_ranges) against direct flights at the same ranges.
 
-A range-free team flies the same at every range, so one flight read at any range must give
+A range-free team flies the same at every range, so one flight scanned at any range must give
 exactly what the engine gives when it flies at that range: the same event times, immediate
 flag and cumulative records, bit for bit, at hypothesis-drawn ranges and on knife edges.
 """
@@ -21,12 +21,12 @@ from hypothesis import strategies as st
 
 from naive import component
 from sarlink import ConfigError, Experiment, Mission, execution, storage
+from sarlink.at_range import at_range
 from sarlink.engine import RadioModel, sharing
 from sarlink.engine.radios import lognormal
 from sarlink.engine.streams import copied, run_streams
 from sarlink.execution import sweep
 from sarlink.metrics import summarize
-from sarlink.ranges import at_range
 from sarlink.result import RunResult
 from sarlink.simulation import prepare
 
@@ -77,7 +77,7 @@ def test_one_flight_equals_a_flight_at_each_range(team: dict, sigma: float, rcs:
 
 
 def test_a_copied_stream_draws_what_the_stream_draws() -> None:
-    """The reading redraws the flight's looks and fades from copies taken before it."""
+    """The scan redraws the flight's looks and fades from copies taken before it."""
     stream = run_streams(5, 9).look
     stream.random(3)
     copy = copied(stream)
@@ -125,7 +125,7 @@ def test_runs_stopped_early(stop: str) -> None:
 @pytest.mark.parametrize("planner", ["covb", "mtsp"])
 def test_every_way_of_drawing_the_fades(shadowing: str, planner: str) -> None:
     """The fades redrawn each coherence time, once per run (a landed mTSP team then settles
-    under shadowing) or drifting with the distance flown: read at every range as drawn."""
+    under shadowing) or drifting with the distance flown: scanned at every range as drawn."""
     mission = Mission.build(planner=planner, drones=5, rc=700.0, sigma=6.0,
                             shadowing=shadowing, horizon=3000.0)
     for run in range(3):
@@ -225,10 +225,10 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
         assert len({t.point.params["rc"] for t in job}) == len(job)
 
 
-def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
+def test_the_parts_to_compile_spread_the_scan_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
-    """The kernels read at several ranges themselves; the staircase is a part of its own,
-    compiled only where a team may be read by it."""
+    """The kernels scan several ranges themselves; the staircase is a part of its own,
+    compiled only where a team may be scanned by it."""
     parts = [("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
              ("kernel", "covb", "disc")]
     tasks = _tasks(tmp_path / "plain", ["conb", "mtsp", "covb"])
@@ -239,43 +239,43 @@ def test_the_parts_to_compile_spread_the_reading_and_the_ga_over_the_workers(
     assert execution._parts(execution._jobs(conb)) == [("kernel", "conb", "disc")]
 
 
-def test_warming_up_the_reading_compiles_it() -> None:
-    """In a process of its own: this one has read flights at several ranges already."""
-    code = ("from sarlink.engine import ranges\n"
+def test_warming_up_the_scan_compiles_it() -> None:
+    """In a process of its own: this one has scanned flights at several ranges already."""
+    code = ("from sarlink.engine import critical_ranges\n"
             "from sarlink.simulation import warm_up\n"
-            "assert not ranges.critical.signatures\n"
+            "assert not critical_ranges.critical.signatures\n"
             "warm_up('mtsp', 'disc', ranges=True)\n"
-            "assert ranges.critical.signatures\n")
+            "assert critical_ranges.critical.signatures\n")
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
 def test_a_one_range_job_flies_as_before_unless_asked_for_the_staircase(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    """The critical ranges cost most of a flight: a job of one range never reads them,
+    """The critical ranges cost most of a flight: a job of one range never finds them,
     unless its rows must carry the staircase; a job of several ranges always does."""
     from sarlink.engine import Prepared
     from sarlink.simulation import plugins_in_code
 
-    read = []
+    scans = []
     original = Prepared.run_ranges
 
     def counted(self: Prepared, *args: object, **kwargs: object) -> object:
-        read.append(1)
+        scans.append(1)
         return original(self, *args, **kwargs)  # type: ignore[arg-type]
 
     monkeypatch.setattr(Prepared, "run_ranges", counted)
     one = Mission.build(planner="covb", drones=4, rc=700.0, horizon=800.0)
     text = one.model_dump_json()
     (plain,) = execution._run_chunk([text], [False], 2, 0, 3, plugins_in_code())
-    assert read == [] and "notify_times" not in plain.column_names
+    assert scans == [] and "notify_times" not in plain.column_names
     (stairs,) = execution._run_chunk([text], [True], 2, 0, 3, plugins_in_code())
-    assert len(read) == 3 and "notify_times" in stairs.column_names
+    assert len(scans) == 3 and "notify_times" in stairs.column_names
     pd.testing.assert_frame_equal(
         stairs.drop_columns(["notify_times", "notify_rc2"]).to_pandas(), plain.to_pandas())
-    read.clear()
+    scans.clear()
     two = [text, one.replace(rc=1400.0).model_dump_json()]
     first, _ = execution._run_chunk(two, [False, False], 2, 0, 3, plugins_in_code())
-    assert len(read) == 3
+    assert len(scans) == 3
     pd.testing.assert_frame_equal(first.to_pandas(), plain.to_pandas())
 
 
@@ -309,18 +309,18 @@ def test_only_the_built_in_radio_may_be_range_free() -> None:
         RadioModel("other", halved_init, lognormal.update, lognormal.nominal, range_free=True)
 
 
-def test_at_range_reads_unflown_ranges_as_flights_would(tmp_path: Path) -> None:
+def test_at_range_evaluates_unflown_ranges_as_flights_would(tmp_path: Path) -> None:
     flown = sweep(_experiment("covb", [300.0, 1200.0], True), tmp_path / "grid", workers=1,
                   progress=False)
     direct = sweep(_experiment("covb", [750.0]), tmp_path / "one", workers=1, progress=False)
-    read = at_range(flown, 750.0)
-    assert len(read) == len(direct)
+    evaluated = at_range(flown, 750.0)
+    assert len(evaluated) == len(direct)
     for column in ("rc", "t_detect", "t_notify", "immediate", "detector"):
-        np.testing.assert_array_equal(read[column].to_numpy(), direct[column].to_numpy())
-    assert read["t_reachable"].isna().all()  # not kept: NaN, never a wrong number
+        np.testing.assert_array_equal(evaluated[column].to_numpy(), direct[column].to_numpy())
+    assert evaluated["t_reachable"].isna().all()  # not kept: NaN, never a wrong number
     kept = at_range(flown, 1200.0)
     pd.testing.assert_frame_equal(kept, flown[flown["rc"] == 1200.0].reset_index(drop=True))
-    s = summarize(read, td=[1000.0])
+    s = summarize(evaluated, td=[1000.0])
     assert s["P_s"].iloc[0] == summarize(direct, td=[1000.0])["P_s"].iloc[0]
 
 
@@ -328,7 +328,7 @@ def test_at_range_reads_unflown_ranges_as_flights_would(tmp_path: Path) -> None:
 def test_at_range_needs_a_staircase(planner: str, staircase: bool, tmp_path: Path) -> None:
     flown = sweep(_experiment(planner, [300.0, 1200.0], staircase), tmp_path / "grid",
                   workers=1, progress=False)
-    with pytest.raises(ConfigError, match="no run can be read"):
+    with pytest.raises(ConfigError, match="no run can be evaluated"):
         at_range(flown, 750.0)
     with pytest.raises(ConfigError, match="rc must be"):
         at_range(flown, -1.0)
@@ -356,37 +356,37 @@ def test_summarize_at_an_unflown_range_on_the_command_line(tmp_path: Path) -> No
 @given(n=st.integers(1, 7), steps=st.integers(1, 60), seed=st.integers(0, 2**32 - 1),
        rcs=st.lists(st.floats(20.0, 400.0), min_size=1, max_size=5), shadowed=st.booleans(),
        move=st.sampled_from([5.0, 40.0]))
-def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int, seed: int,
+def test_the_scan_keeps_every_range_s_graph_and_component(n: int, steps: int, seed: int,
                                                             rcs: list[float], shadowed: bool,
                                                             move: float) -> None:
     """After each step's pass over the links (``ranges._band_links``), the graph at every range
     is the links within it, and a range not marked as moved still holds the BS component of
     that graph and the reachability found when it last moved: the marks may skip a search only
     where neither can have changed."""
-    from sarlink.engine import graph, ranges
+    from sarlink.engine import critical_ranges, graph
     from sarlink.engine.geometry import FAR, PAD
 
     rng = np.random.default_rng(seed)
     m = n + 2
     mp = (m + PAD - 1) // PAD * PAD
-    rd = ranges.new_reading(np.array(rcs) ** 2, n, mp, 1)
+    sc = critical_ranges.new_scan(np.array(rcs) ** 2, n, mp, 1)
     px, py, pz = np.full(mp, FAR), np.full(mp, FAR), np.zeros(mp)
     px[n:m], py[n:m] = (0.0, 150.0), (0.0, 150.0)  # the BS, the target
     fade = rng.lognormal(0.0, 0.5, (m, m)) if shadowed else np.ones((0, 0))
-    near = np.zeros((m, rd.adj.shape[2]), dtype=np.uint64)
+    near = np.zeros((m, sc.adj.shape[2]), dtype=np.uint64)
     stack = np.empty(m, dtype=np.int64)
     found = [(False, 0)] * len(rcs)  # reachability and connected drones, as last found
     pos = rng.uniform(0.0, 300.0, (n, 2))
     for _ in range(steps):  # moves that change a link or two, or several ranges at once
         pos += rng.normal(0.0, move, pos.shape)
         px[:n], py[:n] = pos[:, 0], pos[:, 1]
-        ranges._band_links(px, py, pz, fade, shadowed, rd, near, 0.0, False)
-        for j, r2 in enumerate(rd.thr):
+        critical_ranges._band_links(px, py, pz, fade, shadowed, sc, near, 0.0, False)
+        for j, r2 in enumerate(sc.thr):
             links = {(a, b) for a in range(m) for b in range(a + 1, m)
                      if (px[a] - px[b]) ** 2 + (py[a] - py[b]) ** 2
                      <= (r2 * fade[a, b] if shadowed else r2)}
             bits = {(a, b) for a in range(m) for b in range(a + 1, m)
-                    if graph.linked(rd.adj[j], a, b)}
+                    if graph.linked(sc.adj[j], a, b)}
             assert bits == links
             around: dict[int, set[int]] = {a: set() for a in range(m)}
             for a, b in links:
@@ -394,9 +394,9 @@ def test_the_reading_keeps_every_range_s_graph_and_component(n: int, steps: int,
                 around[b].add(a)
             routed = component({n}, around, blocked=n + 1)  # the target never relays
             now = (any((a, n + 1) in links for a in routed), len(routed) - 1)
-            if not rd.moved[j]:
-                assert {a for a in range(m) if graph.has(rd.routed[j], a)} == routed
+            if not sc.moved[j]:
+                assert {a for a in range(m) if graph.has(sc.routed[j], a)} == routed
                 assert now == found[j]
-            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
+            graph.bs_component(sc.adj[j], n, sc.routed[j], stack)
             found[j] = now
-            rd.moved[j] = rd.changed[j] = False
+            sc.moved[j] = sc.changed[j] = False

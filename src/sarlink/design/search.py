@@ -1,7 +1,7 @@
 """The adaptive search: which candidates get runs, and when the answer is known.
 
 Two phases, both spending runs in rounds (one pool of workers per round; every candidate of a
-round grows to its next look of the :class:`~sarlink.sizing.sequential.Schedule`).
+round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`).
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
    (1, 2, 4, ..., the largest); once a size meets the requirement, or the ladder is decided,
@@ -28,11 +28,11 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from sarlink.config import Mission
-from sarlink.sizing.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
-from sarlink.sizing.candidates import Candidate, Variant, refinements
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.runs import Runs, Tally
-from sarlink.sizing.sequential import Schedule, Verdict, not_worse_by, verdict, worse
+from sarlink.design.answer import CandidateEstimate, DesignAnswer, PlannerAnswer, TeamSize, Tuning
+from sarlink.design.candidates import Candidate, PlannerVariant, refinements
+from sarlink.design.request import DesignRequest
+from sarlink.design.runs import Runs, Tally
+from sarlink.design.sequential import Decision, Schedule, decide, not_worse_by, worse
 
 __all__ = ["search"]
 
@@ -46,7 +46,7 @@ class _Arm:
 
     candidate: Candidate
     mission: Mission
-    verdict: Verdict = Verdict.OPEN
+    verdict: Decision = Decision.OPEN
 
 
 @dataclass
@@ -59,13 +59,13 @@ class _Cell:
     fails_error: float
 
     @property
-    def verdict(self) -> Verdict:
+    def verdict(self) -> Decision:
         verdicts = {arm.verdict for arm in self.arms}
-        if Verdict.MEETS in verdicts:
-            return Verdict.MEETS
-        if verdicts == {Verdict.FAILS}:
-            return Verdict.FAILS
-        return Verdict.OPEN if Verdict.OPEN in verdicts else Verdict.BORDERLINE
+        if Decision.MEETS in verdicts:
+            return Decision.MEETS
+        if verdicts == {Decision.FAILS}:
+            return Decision.FAILS
+        return Decision.OPEN if Decision.OPEN in verdicts else Decision.BORDERLINE
 
 
 def _value(arm: _Arm) -> float | int:
@@ -89,7 +89,7 @@ class _Search:
     progress: Progress | None
     schedule: Schedule = field(init=False)
     base: Mission = field(init=False)
-    cells: dict[Variant, dict[int, _Cell]] = field(default_factory=dict)
+    cells: dict[PlannerVariant, dict[int, _Cell]] = field(default_factory=dict)
     budget_hit: bool = False
 
     def __post_init__(self) -> None:
@@ -113,13 +113,13 @@ class _Search:
     def used(self) -> int:
         return sum(self.tally(arm).runs for arm in self.arms())
 
-    def settings(self, variant: Variant, drones: int) -> int:
+    def settings(self, variant: PlannerVariant, drones: int) -> int:
         """How many settings can ever be tried at this size (the Bonferroni divisor)."""
         setting = variant.setting
         r = self.request
         return 1 if setting is None else setting.size(drones, r.alpha_step, r.alpha_tol)
 
-    def cell(self, variant: Variant, drones: int) -> _Cell:
+    def cell(self, variant: PlannerVariant, drones: int) -> _Cell:
         cells = self.cells[variant]
         if drones not in cells:
             setting = variant.setting
@@ -148,31 +148,31 @@ class _Search:
         self.runs.grow(allowed)
         if self.progress is not None:
             arms = self.arms()
-            self.progress(sum(a.verdict is not Verdict.OPEN for a in arms), len(arms),
+            self.progress(sum(a.verdict is not Decision.OPEN for a in arms), len(arms),
                           self.used())
         return len(allowed) == len(wanted)
 
     def judge(self, arm: _Arm, cell: _Cell) -> None:
         tally = self.tally(arm)
-        arm.verdict = verdict(tally.successes, tally.runs, self.request.ps,
+        arm.verdict = decide(tally.successes, tally.runs, self.request.ps,
                               meets_error=cell.meets_error, fails_error=cell.fails_error,
                               final=self.schedule.after(tally.runs) is None)
 
     # -- phase 1: the smallest team -----------------------------------------------------------
 
-    def smallest(self, variant: Variant) -> int | None:
-        meets = [n for n, c in self.cells[variant].items() if c.verdict is Verdict.MEETS]
+    def smallest(self, variant: PlannerVariant) -> int | None:
+        meets = [n for n, c in self.cells[variant].items() if c.verdict is Decision.MEETS]
         return min(meets, default=None)
 
-    def active(self, variant: Variant) -> list[_Cell]:
+    def active(self, variant: PlannerVariant) -> list[_Cell]:
         """The open cells of ``variant`` worth runs now (see the module docstring)."""
         largest = self.request.max_drones
         smallest = self.smallest(variant)
         below = range(1, largest + 1 if smallest is None else smallest)
         probes = [n for n in _ladder(largest) if n in below]
-        ladder_done = all(self.cell(variant, n).verdict is not Verdict.OPEN for n in probes)
+        ladder_done = all(self.cell(variant, n).verdict is not Decision.OPEN for n in probes)
         sizes = below if smallest is not None or ladder_done else probes
-        return [c for n in sizes if (c := self.cell(variant, n)).verdict is Verdict.OPEN]
+        return [c for n in sizes if (c := self.cell(variant, n)).verdict is Decision.OPEN]
 
     def find_smallest(self) -> None:
         order = {variant: i for i, variant in enumerate(self.cells)}
@@ -182,7 +182,7 @@ class _Search:
                 for cell in self.active(variant):
                     for arm in cell.arms:
                         nxt = self.schedule.after(self.tally(arm).runs)
-                        if arm.verdict is Verdict.OPEN and nxt is not None:
+                        if arm.verdict is Decision.OPEN and nxt is not None:
                             wanted.append((cell, arm, nxt))
             if not wanted:
                 return
@@ -195,7 +195,7 @@ class _Search:
 
     # -- phase 2: the best setting ------------------------------------------------------------
 
-    def tune(self, variant: Variant, cell: _Cell) -> Tuning:
+    def tune(self, variant: PlannerVariant, cell: _Cell) -> Tuning:
         setting = variant.setting
         assert setting is not None
         size = self.settings(variant, cell.drones)
@@ -203,7 +203,7 @@ class _Search:
         step = self.request.alpha_step
         halvings = refinements(step, self.request.alpha_tol) if setting.continuous else 0
         # a setting judged to fail cannot be the best of a size that meets
-        survivors = [a for a in cell.arms if a.verdict is not Verdict.FAILS]
+        survivors = [a for a in cell.arms if a.verdict is not Decision.FAILS]
         while True:
             runs = max(self.tally(a).runs for a in survivors)
             lagging = [(a, runs) for a in survivors if self.tally(a).runs < runs]
@@ -263,10 +263,10 @@ class _Search:
 
     # -- the answer ---------------------------------------------------------------------------
 
-    def estimate(self, arm: _Arm) -> Estimate:
-        return Estimate.of(arm.candidate, self.tally(arm), arm.verdict)
+    def estimate(self, arm: _Arm) -> CandidateEstimate:
+        return CandidateEstimate.of(arm.candidate, self.tally(arm), arm.verdict)
 
-    def answer(self, variant: Variant, tuning: Tuning | None) -> PlannerAnswer:
+    def answer(self, variant: PlannerVariant, tuning: Tuning | None) -> PlannerAnswer:
         cells = self.cells[variant]
         smallest = self.smallest(variant)
         sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)), len(c.arms))
@@ -274,7 +274,7 @@ class _Search:
                       if any(self.tally(a).runs for a in c.arms))
         limit = self.request.max_drones + 1 if smallest is None else smallest
         undecided = tuple(n for n in range(1, limit)
-                          if n not in cells or cells[n].verdict is not Verdict.FAILS)
+                          if n not in cells or cells[n].verdict is not Decision.FAILS)
         chosen = None
         if smallest is not None:
             chosen = (self.estimate(cells[smallest].arms[0]) if tuning is None

@@ -17,12 +17,12 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from sarlink import Experiment, Mission
+from sarlink.at_range import needed_ranges
 from sarlink.cli import app
+from sarlink.design.needed_range import smallest_range
+from sarlink.design.sequential import lower_bound, upper_bound
 from sarlink.execution import sweep
-from sarlink.ranges import needed_ranges
 from sarlink.simulation import prepare
-from sarlink.sizing.ranges import smallest_range
-from sarlink.sizing.sequential import lower_bound, upper_bound
 
 
 def test_a_runs_needed_range_is_where_a_flight_starts_to_succeed(tmp_path: Path) -> None:

@@ -3,7 +3,7 @@
 ``sarlink design`` without ``--rc`` asks, for each planner whose team flies the same at every
 range (:attr:`sarlink.engine.run.Prepared.range_free`) and each team size: *which range
 ``r_c`` makes ``P_s(t_d) >= ps``?* One flight per run answers it at every range: a run's
-notification staircase (:mod:`sarlink.engine.ranges`) gives the smallest range at which its
+notification staircase (:mod:`sarlink.engine.critical_ranges`) gives the smallest range at which its
 BS is notified by ``t_d``, its *needed range* ``ρ_k`` (infinite if the target is not found by
 then). A run notified at some range is notified at every larger one, so
 ``P_s(t_d, r_c) = Pr{ρ ≤ r_c}`` and the range asked for is the ``ps``-quantile of ``ρ``.
@@ -29,14 +29,14 @@ from typing import Any
 
 import numpy as np
 
+from sarlink.at_range import needed_ranges
 from sarlink.config import Experiment, Mission
+from sarlink.design.request import DesignRequest
+from sarlink.design.sequential import lower_bound, upper_bound
 from sarlink.engine.radios import get_radio
 from sarlink.execution import Workers, sweep_all
 from sarlink.planners import get_planner
-from sarlink.ranges import needed_ranges
 from sarlink.simulation import prepare
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.sequential import lower_bound, upper_bound
 
 __all__ = ["PlannerRanges", "RangeNeed", "range_design", "smallest_range"]
 

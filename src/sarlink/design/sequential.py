@@ -23,7 +23,7 @@ from scipy.stats import beta, binomtest
 
 from sarlink.metrics import wilson
 
-__all__ = ["Schedule", "Verdict", "lower_bound", "not_worse_by", "upper_bound", "verdict",
+__all__ = ["Decision", "Schedule", "decide", "lower_bound", "not_worse_by", "upper_bound",
            "worse"]
 
 
@@ -52,8 +52,9 @@ class Schedule:
         return next((n for n in self.looks if n > runs), None)
 
 
-class Verdict(enum.StrEnum):
-    """What the runs so far say about ``P_s`` against the requirement."""
+class Decision(enum.StrEnum):
+    """What the sequential test decides from the runs so far about ``P_s`` against the
+    requirement (the ``verdict`` of an estimate and of a team size in the answer)."""
 
     MEETS = "meets"
     FAILS = "fails"
@@ -77,8 +78,8 @@ def upper_bound(successes: int, runs: int, error: float) -> float:
     return float(beta.ppf(1 - error, successes + 1, runs - successes))
 
 
-def verdict(successes: int, runs: int, required: float, *, meets_error: float,
-            fails_error: float, final: bool) -> Verdict:
+def decide(successes: int, runs: int, required: float, *, meets_error: float,
+           fails_error: float, final: bool) -> Decision:
     """Judge ``P_s >= required`` from ``successes`` of ``runs``.
 
     "Meets" also needs the 95 % Wilson lower bound, which the answer reports, at or above
@@ -89,10 +90,10 @@ def verdict(successes: int, runs: int, required: float, *, meets_error: float,
     """
     if lower_bound(successes, runs, meets_error) >= required and float(
             wilson(successes, runs)[0]) >= required:  # the interval reported agrees
-        return Verdict.MEETS
+        return Decision.MEETS
     if upper_bound(successes, runs, fails_error) < required:
-        return Verdict.FAILS
-    return Verdict.BORDERLINE if final else Verdict.OPEN
+        return Decision.FAILS
+    return Decision.BORDERLINE if final else Decision.OPEN
 
 
 def worse(a: np.ndarray, b: np.ndarray, error: float) -> bool:

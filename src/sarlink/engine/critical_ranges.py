@@ -1,4 +1,4 @@
-"""Critical ranges: one flight of a range-free team, read at every communication range.
+"""Critical ranges: one flight of a range-free team, scanned at every communication range.
 
 When no drone's path depends on the links (routes, CovB, drones that do not report:
 :attr:`sarlink.engine.run.Prepared.range_free`), the flight is the same at every range
@@ -21,21 +21,21 @@ knew the step before: their key) of the largest key on the way, two passes over 
 The BS is notified at ``R2`` from the first step its key is ``≤ R2``; the steps at which the
 running minimum of its key falls are the run's notification staircase, all that P_s needs.
 
-Read at a few given ranges without the staircase (what a sweep over ``rc`` needs), a tree per
+Scanned at a few given ranges without the staircase (what a sweep over ``rc`` needs), a tree per
 step is more than needed: the graph at each range changes only when a link's key crosses that
 range, which moving drones do about once a step among all the links and ranges of a run. So
 the links' *bands* (how many of the ranges lie below their key) are followed instead, and the
 graph of a range, with its BS component, reachability and flood (the kernel's own functions),
 is worked out again only when a link enters or leaves it, or a drone newly senses the target.
-This reading runs inside the flight (:func:`read_step`, called by the kernel at every step
+This range scan runs inside the flight (:func:`scan_step`, called by the kernel at every step
 when given ranges): the flight's own looks and fades (its radio flies at ``r_c = 1``, so its
 thresholds are the bare fades) and its positions as they are, with no graph at the flight's
 own range.
 
-The staircase is read after the flight from its positions (``Params.trace``: the flight
+The staircase is found after the flight from its positions (``Params.trace``: the flight
 keeps no graph); the sensing looks and the fades are drawn again from copies of the run's
 streams, which the flight draws independently of ``r_c`` (docs/model.md, "One flight, every
-range"). Only the built-in log-normal radio (disc and shadowing) is read either way: its
+range"). Only the built-in log-normal radio (disc and shadowing) is scanned either way: its
 fades are the same at every range.
 """
 
@@ -61,7 +61,7 @@ _ONE = np.uint64(1)
 
 
 class Critical(NamedTuple):
-    """A flight's critical ranges, and its records at the squared ranges it was read at."""
+    """A flight's critical ranges, and its records at the squared ranges it was scanned at."""
 
     det_step: int
     """The step of the first detection (``-1``: none)."""
@@ -74,7 +74,7 @@ class Critical(NamedTuple):
     """That minimum from each of those steps on (squared ranges, m², in the link pass's
     arithmetic): notified by ``notify_steps[j]`` iff ``notify_keys[j] ≤ R2``."""
     notified: np.ndarray
-    """Per squared range read at: the step of the notification (``-1``: never)."""
+    """Per squared range scanned at: the step of the notification (``-1``: never)."""
     reach_cum: np.ndarray
     """``(ranges, checkpoints)``: the kernel's ``reach_cum`` at each squared range."""
     conn_cum: np.ndarray
@@ -317,8 +317,8 @@ def _toggle(adj: np.ndarray, a: int, b: int) -> None:
     adj[b, a >> 6] ^= np.uint64(1) << np.uint64(a & 63)
 
 
-class Reading(NamedTuple):
-    """A range-free flight read at several ranges as it flies (:func:`read_step`): the graph
+class Scan(NamedTuple):
+    """A range-free flight scanned at several ranges as it flies (:func:`scan_step`): the graph
     at each range, and each range's records. Ranges are indexed in ascending order."""
 
     thr: np.ndarray
@@ -362,8 +362,8 @@ class Reading(NamedTuple):
 
 
 @njit(cache=True, error_model="numpy")
-def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
-    """The reading of a flight of ``n`` drones (``mp`` padded nodes) at the squared ranges
+def new_scan(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Scan:
+    """The range scan of a flight of ``n`` drones (``mp`` padded nodes) at the squared ranges
     ``r2s``, before its first step: no link at any range yet, so that the BS's component is
     the BS alone, the target unreachable and no drone connected."""
     m = n + 2
@@ -380,7 +380,7 @@ def new_reading(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Reading:
     routed = np.zeros((nr, nw), dtype=np.uint64)
     for j in range(nr):
         graph.add(routed[j], n)
-    return Reading(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds,
+    return Scan(thr, rank, np.full((m, m), nr, dtype=np.int64), bounds,
                    np.zeros((nr, m, nw), dtype=np.uint64), routed,
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
                    np.zeros(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_), notified,
@@ -402,37 +402,37 @@ def _relayed(adj: np.ndarray, a: int, b: int, tg: int) -> bool:
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _band_link(a: int, b: int, v: float, rd: Reading) -> None:
+def _band_link(a: int, b: int, v: float, sc: Scan) -> None:
     """Link ``a < b``, of key ``v``, into its band: toggled in the graphs of the ranges
     between its old band and its new one, whose BS component (and reachability) is marked
     as moved where the toggle may change it. It cannot if the link is new between two nodes
     on the same side of the component, is lost between two nodes not both in it or between two
     that stay linked through a third (:func:`_relayed`), or links the target (a leaf, node
     ``m - 1``) to a node off the component."""
-    m = rd.band.shape[0]
-    thr = rd.thr
+    m = sc.band.shape[0]
+    thr = sc.thr
     nr = thr.shape[0]
     now = np.searchsorted(thr, v)  # the ranges below the key
-    was = rd.band[a, b]
+    was = sc.band[a, b]
     for j in range(min(now, was), max(now, was)):
-        _toggle(rd.adj[j], a, b)
-        rd.changed[j] = True
-        if not rd.moved[j]:  # the component as of the step before, still right
-            joined = graph.has(rd.routed[j], a), graph.has(rd.routed[j], b)
+        _toggle(sc.adj[j], a, b)
+        sc.changed[j] = True
+        if not sc.moved[j]:  # the component as of the step before, still right
+            joined = graph.has(sc.routed[j], a), graph.has(sc.routed[j], b)
             if b == m - 1:
-                rd.moved[j] = joined[0]
+                sc.moved[j] = joined[0]
             elif now < was:  # the link is new at range j
-                rd.moved[j] = joined[0] != joined[1]
+                sc.moved[j] = joined[0] != joined[1]
             else:
-                rd.moved[j] = joined[0] and joined[1] and not _relayed(rd.adj[j], a, b, m - 1)
-    rd.band[a, b] = now
-    rd.bounds[0, a, b] = thr[now - 1] if now > 0 else -_INF
-    rd.bounds[1, a, b] = thr[now] if now < nr else _INF
+                sc.moved[j] = joined[0] and joined[1] and not _relayed(sc.adj[j], a, b, m - 1)
+    sc.band[a, b] = now
+    sc.bounds[0, a, b] = thr[now - 1] if now > 0 else -_INF
+    sc.bounds[1, a, b] = thr[now] if now < nr else _INF
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray,
-                shadowed: bool, rd: Reading, near: np.ndarray, r2: float,
+                shadowed: bool, sc: Scan, near: np.ndarray, r2: float,
                 with_near: bool) -> bool:
     """Bring the graph at every range up to date with this step's positions and fades and,
     if ``with_near``, the pairs within squared sensing range ``r2`` (``near``, as
@@ -446,14 +446,14 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     Under shadowing every link's key moves with its fade, so every link is looked at.
     Returns whether any graph changed.
     """
-    m = rd.band.shape[0]
+    m = sc.band.shape[0]
     mp = px.shape[0]
-    lo, hi = rd.bounds[0], rd.bounds[1]
+    lo, hi = sc.bounds[0], sc.bounds[1]
     toggled = False
     for a in range(m):
         xa, ya, za = px[a], py[a], pz[a]
         lo_a, hi_a = lo[a], hi[a]
-        for w in range(rd.adj.shape[2]):
+        for w in range(sc.adj.shape[2]):
             first = w * 64
             close = np.uint64(0)
             left = np.uint64(0)  # the links that left their band
@@ -474,20 +474,20 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
             while left:
                 b = first + graph.lowest(left)
                 left &= left - _ONE
-                _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), rd)
+                _band_link(a, b, d2(xa, ya, za, px[b], py[b], pz[b]), sc)
         if shadowed:  # every link's key moves with its fade
             for b in range(a + 1, m):
                 v = _effective(d2(xa, ya, za, px[b], py[b], pz[b]), fade[a, b])
                 if not lo[a, b] < v <= hi[a, b]:
-                    _band_link(a, b, v, rd)
+                    _band_link(a, b, v, sc)
                     toggled = True
     return toggled
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
+def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
-              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, rd: Reading,
+              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, sc: Scan,
               near: np.ndarray, with_near: bool) -> None:
     """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
     first of them), the graph (the kernel's link pass at every range, which also gives the
@@ -502,55 +502,55 @@ def read_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     target (a range-free flight floods nothing).
     """
     n = sensed.shape[0]
-    _open_step(k, cp_steps, ci, rd.going, rd.reach_cum, rd.conn_cum, rd.acc_reach,
-               rd.acc_conn)
+    _open_step(k, cp_steps, ci, sc.going, sc.reach_cum, sc.conn_cum, sc.acc_reach,
+               sc.acc_conn)
     new_knower = False
     for i in range(n):
-        new_knower |= sensed[i] and not rd.counted[i]
-        rd.counted[i] = sensed[i]
-    toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, rd, near, p.r * p.r, with_near)
+        new_knower |= sensed[i] and not sc.counted[i]
+        sc.counted[i] = sensed[i]
+    toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, sc, near, p.r * p.r, with_near)
     notified_now = False
     # a step that changed no graph and no knower moves no component and floods nothing
-    for j in range(rd.thr.shape[0] if toggled or new_knower else 0):
-        if rd.moved[j]:
-            graph.bs_component(rd.adj[j], n, rd.routed[j], stack)
-            reachable, connected = graph.reachability(rd.adj[j], rd.routed[j], n,
+    for j in range(sc.thr.shape[0] if toggled or new_knower else 0):
+        if sc.moved[j]:
+            graph.bs_component(sc.adj[j], n, sc.routed[j], stack)
+            reachable, connected = graph.reachability(sc.adj[j], sc.routed[j], n,
                                                       p.reachability)
-            rd.d_reach[j] = p.dt if reachable else 0.0
-            rd.d_conn[j] = p.dt * connected / n
-        if detected and rd.notified[j] < 0 and (rd.changed[j] or new_knower):
+            sc.d_reach[j] = p.dt if reachable else 0.0
+            sc.d_conn[j] = p.dt * connected / n
+        if detected and sc.notified[j] < 0 and (sc.changed[j] or new_knower):
             for i in range(n):
-                rd.knows[j, i] |= sensed[i]
-            if graph.flood(rd.adj[j], rd.routed[j], rd.knows[j], spread, stack):
-                rd.notified[j] = k
+                sc.knows[j, i] |= sensed[i]
+            if graph.flood(sc.adj[j], sc.routed[j], sc.knows[j], spread, stack):
+                sc.notified[j] = k
                 notified_now = True
-        rd.changed[j] = rd.moved[j] = False
+        sc.changed[j] = sc.moved[j] = False
     # the step's records, added at every range at once: a range whose run stopped takes no
     # more checkpoints (_open_step), so what is added to it after does not matter
     if k == p.n_steps or (p.stop == STOP_DETECTED and detected):
-        rd.going[:] = False
+        sc.going[:] = False
     elif p.stop == STOP_NOTIFIED and notified_now:
-        for j in range(rd.thr.shape[0]):
-            rd.going[j] &= rd.notified[j] < 0
-    for j in range(rd.thr.shape[0]):
-        rd.acc_reach[j] += rd.d_reach[j]
-        rd.acc_conn[j] += rd.d_conn[j]
+        for j in range(sc.thr.shape[0]):
+            sc.going[j] &= sc.notified[j] < 0
+    for j in range(sc.thr.shape[0]):
+        sc.acc_reach[j] += sc.d_reach[j]
+        sc.acc_conn[j] += sc.d_conn[j]
 
 
 @njit(cache=True, error_model="numpy")
-def carry_reading(start: int, p: Params, cp_steps: np.ndarray, ci: int, rd: Reading) -> None:
+def carry_scan(start: int, p: Params, cp_steps: np.ndarray, ci: int, sc: Scan) -> None:
     """A settled team: every range whose run goes on observes its last step again to the
     horizon (:func:`sarlink.engine.records.carry_records`)."""
-    for j in range(rd.thr.shape[0]):
-        if rd.going[j]:
-            records.carry_records(start, p.n_steps, cp_steps, ci, rd.reach_cum[j],
-                                  rd.conn_cum[j], rd.acc_reach[j], rd.acc_conn[j],
-                                  rd.d_reach[j], rd.d_conn[j])
+    for j in range(sc.thr.shape[0]):
+        if sc.going[j]:
+            records.carry_records(start, p.n_steps, cp_steps, ci, sc.reach_cum[j],
+                                  sc.conn_cum[j], sc.acc_reach[j], sc.acc_conn[j],
+                                  sc.d_reach[j], sc.d_conn[j])
 
 
 @njit(cache=True, error_model="numpy")
-def read_records(rd: Reading) -> records.AtRanges:
+def scan_records(sc: Scan) -> records.AtRanges:
     """Each range's records, in the order of the ranges as given."""
-    back = np.empty_like(rd.rank)
-    back[rd.rank] = np.arange(rd.rank.shape[0])
-    return records.AtRanges(rd.notified[back], rd.reach_cum[back], rd.conn_cum[back])
+    back = np.empty_like(sc.rank)
+    back[sc.rank] = np.arange(sc.rank.shape[0])
+    return records.AtRanges(sc.notified[back], sc.reach_cum[back], sc.conn_cum[back])

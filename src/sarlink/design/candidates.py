@@ -17,7 +17,7 @@ import numpy as np
 from sarlink.config import Mission
 from sarlink.planners import get_planner
 
-__all__ = ["SETTINGS", "Candidate", "Setting", "Variant", "refinements"]
+__all__ = ["SETTINGS", "Candidate", "PlannerVariant", "Setting", "refinements"]
 
 
 @dataclass(frozen=True)
@@ -63,7 +63,7 @@ SETTINGS: dict[str, Setting] = {
 
 
 @dataclass(frozen=True)
-class Variant:
+class PlannerVariant:
     """A planner with fixed extra mission parameters; tuned over ``setting`` if it has one."""
 
     planner: str
@@ -94,7 +94,7 @@ class Variant:
 class Candidate:
     """A variant flying ``drones`` drones with its setting at ``value`` (None: no setting)."""
 
-    variant: Variant
+    variant: PlannerVariant
     drones: int
     value: float | int | None = None
 

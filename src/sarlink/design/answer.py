@@ -6,20 +6,21 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from sarlink.sizing.candidates import Candidate
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.runs import Tally
-from sarlink.sizing.sequential import Verdict
+from sarlink.design.candidates import Candidate
+from sarlink.design.request import DesignRequest
+from sarlink.design.runs import Tally
+from sarlink.design.sequential import Decision
 
-__all__ = ["DesignAnswer", "Estimate", "PlannerAnswer", "TeamSize", "Tuning"]
+__all__ = ["CandidateEstimate", "DesignAnswer", "PlannerAnswer", "TeamSize", "Tuning"]
 
 GRID_RUNS = 2000
 """Runs per grid point of the full sweep a design is compared with: the paper's."""
 
 
 @dataclass(frozen=True)
-class Estimate:
-    """``P_s(t_d)`` of one candidate from its runs so far, with the 95 % Wilson interval."""
+class CandidateEstimate:
+    """``P_s(t_d)`` of one candidate from its runs so far, with the 95 % Wilson interval and
+    the sequential test's decision."""
 
     drones: int
     value: float | int | None
@@ -31,10 +32,10 @@ class Estimate:
     hi: float
     mission_time: float
     """Mean notification time of the successful runs, s."""
-    verdict: Verdict
+    verdict: Decision
 
     @classmethod
-    def of(cls, candidate: Candidate, tally: Tally, verdict: Verdict) -> Estimate:
+    def of(cls, candidate: Candidate, tally: Tally, verdict: Decision) -> CandidateEstimate:
         """The estimate of ``candidate`` from its runs' ``tally``, with its Wilson interval."""
         lo, hi = tally.interval()
         return cls(candidate.drones, candidate.value, tally.runs, tally.successes, tally.p, lo,
@@ -46,8 +47,8 @@ class TeamSize:
     """One team size of one planner: its verdict and its most successful setting."""
 
     drones: int
-    verdict: Verdict
-    best: Estimate
+    verdict: Decision
+    best: CandidateEstimate
     settings: int
     """How many settings were tried at this size."""
 
@@ -57,11 +58,11 @@ class Tuning:
     """The planner's setting at its smallest team: the best value and the curve behind it."""
 
     setting: str
-    best: Estimate
+    best: CandidateEstimate
     equivalent: tuple[float | int, ...]
     """Values whose ``P_s`` is not shown to be below the best's (within the margin, or not
     told apart at the cap or when the budget ran out), the best included."""
-    curve: tuple[Estimate, ...]
+    curve: tuple[CandidateEstimate, ...]
     """Every value tried, in increasing order."""
     ended_by: str
     """``statistics``: one value is best or the rest are within the margin; ``cap``: every
@@ -79,7 +80,7 @@ class PlannerAnswer:
     status: str
     """``reached``, ``not reachable`` (every team size fails) or ``undecided``."""
     smallest: int | None
-    chosen: Estimate | None
+    chosen: CandidateEstimate | None
     """The candidate at the smallest team, at its best setting."""
     undecided: tuple[int, ...]
     """Smaller team sizes that stayed borderline or open: the true smallest may be one."""

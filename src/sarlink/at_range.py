@@ -1,4 +1,4 @@
-"""Run tables read at a communication range that was not flown.
+"""Run tables evaluated at a communication range that was not flown.
 
 A range-free run (:attr:`sarlink.engine.Prepared.range_free`) of an experiment with
 ``staircase = true`` is stored with its notification staircase (``notify_times``,
@@ -74,7 +74,7 @@ def range_curve(runs: pd.DataFrame, rcs: np.ndarray, td: float, by: list[str]) -
 def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
     """The runs of ``runs`` (as :func:`sarlink.load` returns them) at the range ``rc``, m.
 
-    Runs flown at ``rc`` are kept as they are. Every other range-free run is read from the
+    Runs flown at ``rc`` are kept as they are. Every other range-free run is evaluated from the
     row of the same run at the largest flown range below ``rc`` (the smallest flown range
     if there is none): its ``rc`` becomes ``rc``, ``t_notify`` and ``immediate`` are read
     from the staircase, and ``reach_cum``, ``connected_cum``, ``t_reachable`` and
@@ -85,7 +85,7 @@ def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
     if not (math.isfinite(rc) and rc > 0):
         raise ConfigError(f"rc must be a finite range > 0 m, got {rc:g}")
     if runs.empty:
-        raise ConfigError("no runs to read at a range")
+        raise ConfigError("no runs to evaluate at a range")
     others = [p for p in param_groups() if p in runs.columns and p != "rc"]
     team = runs.groupby(others, sort=False, dropna=False).ngroup().to_numpy()
     run = runs["run"].to_numpy(dtype=np.int64)
@@ -102,7 +102,7 @@ def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
     first = first[(first["_rank"] == 0) | first["_stairs"]]
     chosen = first.drop_duplicates("_key", keep="first")
     if chosen.empty:
-        raise ConfigError(f"no run can be read at r_c = {rc:g} m: it was not flown, and no "
+        raise ConfigError(f"no run can be evaluated at r_c = {rc:g} m: it was not flown, and no "
                           "row carries a notification staircase (a team that flies the same "
                           "at every range, swept with staircase = true)")
     left_out = set(key) - set(chosen["_key"])

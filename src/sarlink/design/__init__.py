@@ -2,8 +2,8 @@
 
 ``design(request, out)`` answers "which team reports the target within ``t_d`` with
 probability at least ``P_s``?" by simulation, spending runs where the decision is uncertain
-(:mod:`sarlink.sizing.search`) and keeping them in the sweep layer's folders
-(:mod:`sarlink.sizing.runs`), so that a design started again reuses every finished run.
+(:mod:`sarlink.design.search`) and keeping them in the sweep layer's folders
+(:mod:`sarlink.design.runs`), so that a design started again reuses every finished run.
 """
 
 from __future__ import annotations
@@ -13,27 +13,27 @@ from pathlib import Path
 
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
+from sarlink.design.answer import CandidateEstimate, DesignAnswer, PlannerAnswer, TeamSize, Tuning
+from sarlink.design.candidates import Candidate, PlannerVariant, Setting
+from sarlink.design.request import DesignRequest
+from sarlink.design.runs import Runs, Tally
+from sarlink.design.search import search
+from sarlink.design.sequential import Decision
 from sarlink.execution import start_workers
-from sarlink.sizing.answer import DesignAnswer, Estimate, PlannerAnswer, TeamSize, Tuning
-from sarlink.sizing.candidates import Candidate, Setting, Variant
-from sarlink.sizing.request import DesignRequest
-from sarlink.sizing.runs import Runs, Tally
-from sarlink.sizing.search import search
-from sarlink.sizing.sequential import Verdict
 
 __all__ = [
     "Candidate",
+    "CandidateEstimate",
+    "Decision",
     "DesignAnswer",
     "DesignRequest",
-    "Estimate",
     "PlannerAnswer",
+    "PlannerVariant",
     "Runs",
     "Setting",
     "Tally",
     "TeamSize",
     "Tuning",
-    "Variant",
-    "Verdict",
     "design",
 ]
 

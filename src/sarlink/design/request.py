@@ -12,9 +12,9 @@ from typing import Any, Self
 from pydantic import Field, field_validator, model_validator
 
 from sarlink.config import Checked, ConfigError, Mission, param_groups
+from sarlink.design.candidates import Candidate, PlannerVariant
+from sarlink.design.sequential import Schedule
 from sarlink.planners import planner_names
-from sarlink.sizing.candidates import Candidate, Variant
-from sarlink.sizing.sequential import Schedule
 
 __all__ = ["DesignRequest"]
 
@@ -113,10 +113,10 @@ class DesignRequest(Checked):
         only until the BS is notified, the one event ``P_s(td)`` reads."""
         return self.mission.replace(horizon=self.td, stop="notified")
 
-    def variants(self) -> list[Variant]:
+    def variants(self) -> list[PlannerVariant]:
         """Every planner with every combination of the options, in request order."""
         names = list(self.options)
-        return [Variant(planner, tuple(zip(names, values, strict=True)))
+        return [PlannerVariant(planner, tuple(zip(names, values, strict=True)))
                 for planner in self.planners
                 for values in itertools.product(*self.options.values())]
 

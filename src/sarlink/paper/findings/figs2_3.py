@@ -1,0 +1,214 @@
+"""The claims of Figs. 2 and 3: P_s against t_d, and against the team size."""
+
+from __future__ import annotations
+
+import itertools
+
+from sarlink.paper.claim import Settings, claim
+from sarlink.paper.evidence import Outcome, Verdict
+from sarlink.paper.experiments import DRONES, FIG2_DRONES, RANGES, TD_LONG, TD_SHORT
+from sarlink.paper.findings.helpers import (
+    COVERAGE,
+    HYBRID_SMALL_TEAMS,
+    HYBRIDS,
+    SMALL,
+    _above,
+    _averaged,
+    _below,
+    _change,
+    _gaps,
+    _label,
+    _rc,
+    _stat,
+)
+from sarlink.paper.paired import PairedTables, Stat
+from sarlink.planners import PAPER_PLANNERS
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "Observe from the figures that as r_c becomes larger mission success probability "
+       "approaches 1 even with short target durations.",
+       "As r_c grows, P_s at a short t_d rises toward 1.")
+def larger_range_short_td(t: PairedTables, s: Settings) -> Verdict:
+    """A trend, at the short t_d = 1000 s, for every planner and each team size of Fig. 2
+    (10 and 22): P_s at r_c = 2000 m minus at 500 m (paired) lies above 0 (equal in every run,
+    both at 1 say, is not testable), and P_s never falls significantly from one range to the
+    next (contradicted if it does)."""
+    v = Verdict()
+    for n in FIG2_DRONES:
+        for p in PAPER_PLANNERS:
+            e = {rc: _stat(t, "P_s", p, n, rc, TD_SHORT) for rc in RANGES}
+            falls = [f"{a:g} to {b:g} m" for a, b in itertools.pairwise(RANGES)
+                     if (e[b] - e[a]).estimate().hi < 0]
+            rise = (e[RANGES[-1]] - e[RANGES[0]]).estimate()
+            v.test(Outcome.CONTRADICTED if falls else rise.above(),
+                   f"N_m = {n}, {_label(p)}: P_s({TD_SHORT:g} s) "
+                   + ", ".join(f"{rc:g} m {x.estimate()}" for rc, x in e.items())
+                   + f"; rise from {RANGES[0]:g} to {RANGES[-1]:g} m {rise}"
+                   + (f"; falls significantly from {', '.join(falls)}" if falls else ""))
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "In the case of ConB, the drones are allowed to spread more with higher transmission "
+       "ranges.", "ConB covers more of the area (P_d) as r_c grows.")
+def conb_spreads_with_range(t: PairedTables, s: Settings) -> Verdict:
+    """For ConB at t_d = 4000 s: P_d at each larger r_c minus at the next smaller one,
+    averaged over team sizes (paired), lies above 0."""
+    v = Verdict()
+    for a, b in itertools.pairwise(RANGES):
+        per = {n: _stat(t, "P_d", "conb", n, b, TD_LONG) - _stat(t, "P_d", "conb", n, a, TD_LONG)
+               for n in DRONES}
+        _averaged(v, per, _above(), f"ConB's P_d at {b:g} m minus at {a:g} m")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "In the case of mTSP and CovB, with smaller r_c the drones can inform the BS mostly on "
+       "their return path.",
+       "At small r_c most of mTSP's and CovB's notifications come after detection.")
+def coverage_notify_later_small_range(t: PairedTables, s: Settings) -> Verdict:
+    """At the smallest r_c (500 m) and t_d = 4000 s, for mTSP and CovB: the immediate
+    notification probability (the share of detections notified at once), averaged over team
+    sizes, lies below 0.5: most notifications come later."""
+    v = Verdict()
+    rc = RANGES[0]
+    for p in COVERAGE:
+        per = {n: _stat(t, "immediate", p, n, rc, TD_LONG) for n in DRONES}
+        _averaged(v, per, _below(0.5), f"{_rc(rc)}, {_label(p)}: immediate notification")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "When t_d = 4000 s, the mTSP scheme can finish the search mission even with 2 drones, "
+       "and hence the mission success probability of mTSP in this case is 1.",
+       "At t_d = 4000 s mTSP succeeds with probability 1 even with 2 drones.")
+def mtsp_two_drones(t: PairedTables, s: Settings) -> Verdict:
+    """For every r_c, every run of mTSP with N_m = 2 notifies the BS within t_d = 4000 s. A
+    single run not notified contradicts the claim at any sample size."""
+    v = Verdict()
+    for rc in RANGES:
+        e = _stat(t, "P_s", "mtsp", 2, rc, TD_LONG)
+        k, n = e.counts or (0, 0)
+        v.test(Outcome.HOLDS if k == n else Outcome.CONTRADICTED,
+               f"{_rc(rc)}: {k} of {n} runs notified, P_s = {e.estimate()}")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "Due to the constraints on connectivity, adding more drones does not help ConB",
+       "More drones do not help ConB.")
+def drones_do_not_help_conb(t: PairedTables, s: Settings) -> Verdict:
+    """At Fig. 3's t_d and every r_c, ConB's gain in P_s from N_m = 2 to 22 (paired) lies
+    below 0.1."""
+    v = Verdict()
+    for rc in RANGES:
+        e = _change(t, "P_s", "conb", (DRONES[0], rc, s.td_fig3),
+                    (DRONES[-1], rc, s.td_fig3)).estimate()
+        v.test(e.below(SMALL), f"{_rc(rc)}: ConB's gain in P_s({s.td_fig3:g} s) from "
+                               f"N_m = {DRONES[0]} to {DRONES[-1]}: {e}")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "higher spatial density (due to higher r_c and/or N_m) improves the performance of "
+       "mTSP and coverage-based schemes, significantly",
+       "More drones, and a larger r_c, raise mTSP's and CovB's P_s.")
+def density_helps_coverage(t: PairedTables, s: Settings) -> Verdict:
+    """At Fig. 3's t_d, for mTSP and CovB (paired): the gain in P_s from N_m = 2 to 22 lies
+    above 0 at every r_c, and the gain from r_c = 500 to 2000 m, averaged over team sizes,
+    lies above 0."""
+    v = Verdict()
+    td = s.td_fig3
+    for p in COVERAGE:
+        for rc in RANGES:
+            e = _change(t, "P_s", p, (DRONES[0], rc, td), (DRONES[-1], rc, td)).estimate()
+            v.test(e.above(), f"{_rc(rc)}, {_label(p)}: gain in P_s({td:g} s) from "
+                              f"N_m = {DRONES[0]} to {DRONES[-1]}: {e}")
+        per = {n: _change(t, "P_s", p, (n, RANGES[0], td), (n, RANGES[-1], td))
+               for n in DRONES}
+        _averaged(v, per, _above(), f"{_label(p)}: gain in P_s({td:g} s) from "
+                                    f"{_rc(RANGES[0])} to {RANGES[-1]:g} m")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "The hybrid schemes highly benefit from integrating connectivity in the search "
+       "decisions.", "Both hybrids beat ConB in P_s.")
+def hybrids_beat_conb(t: PairedTables, s: Settings) -> Verdict:
+    """At Fig. 3's t_d and every r_c, for ConCov and for mTSP-ConB: its P_s minus ConB's,
+    averaged over team sizes (paired), lies above 0."""
+    v = Verdict()
+    _gaps(v, t, "P_s", HYBRIDS, ["conb"], RANGES, s.td_fig3, _above())
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "The performance improvement of both schemes over ConB is most evident when r_c is "
+       "low.", "The hybrids' advantage over ConB is largest at the smallest r_c.")
+def hybrids_gain_most_at_low_range(t: PairedTables, s: Settings) -> Verdict:
+    """At Fig. 3's t_d, for ConCov and for mTSP-ConB: its advantage over ConB in P_s at
+    r_c = 500 m minus the advantage at each larger r_c, averaged over team sizes (all paired:
+    the same runs), lies above 0."""
+    v = Verdict()
+    td = s.td_fig3
+    for h in HYBRIDS:
+        def gain(n: int, rc: float, h: str = h) -> Stat:
+            return _stat(t, "P_s", h, n, rc, td) - _stat(t, "P_s", "conb", n, rc, td)
+        for rc in RANGES[1:]:
+            per = {n: gain(n, RANGES[0]) - gain(n, rc) for n in DRONES}
+            _averaged(v, per, _above(), f"{_label(h)}'s advantage over ConB in P_s({td:g} s) "
+                                        f"at {RANGES[0]:g} m minus at {rc:g} m")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "Between ConCov and mTSP-Con schemes, we observe that as N_m is increased ConCov "
+       "significantly outperforms mTSP-Con, implying that while mTSP-Con guarantees search "
+       "time it still suffers from delayed notification.",
+       "With more drones ConCov pulls ahead of mTSP-ConB at a short t_d.")
+def concov_beats_mtsp_conb(t: PairedTables, s: Settings) -> Verdict:
+    """At the short t_d = 1000 s (where delayed notification costs success) and every r_c:
+    ConCov's P_s minus mTSP-ConB's at the largest team (22) lies above 0, and it grows from
+    mTSP-ConB's smallest own team (8 drones, the first above N_r) to 22 (paired change above
+    0)."""
+    v = Verdict()
+    first, last = HYBRID_SMALL_TEAMS[0], DRONES[-1]
+    for rc in RANGES:
+        d = {n: _stat(t, "P_s", "concov", n, rc, TD_SHORT)
+             - _stat(t, "P_s", "mtsp-conb", n, rc, TD_SHORT) for n in (first, last)}
+        e, growth = d[last].estimate(), (d[last] - d[first]).estimate()
+        v.test(e.above(), f"{_rc(rc)}: ConCov − mTSP-ConB in P_s({TD_SHORT:g} s) at "
+                          f"N_m = {last}: {e}")
+        v.test(growth.above(), f"{_rc(rc)}: its change from N_m = {first} "
+                               f"({d[first].estimate()}): {growth}")
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "Due to the equal weight given to the search and connectivity components of ConCov, "
+       "the drones can simultaneously spread out and stay connected.",
+       "ConCov keeps more drones connected than mTSP and CovB, and covers more than ConB.")
+def concov_spreads_and_connects(t: PairedTables, s: Settings) -> Verdict:
+    """At t_d = 4000 s and every r_c, averaged over team sizes (paired): ConCov's mean
+    fraction of drones connected to the BS minus mTSP's and minus CovB's lies above 0 (stays
+    connected), and its P_d minus ConB's lies above 0 (spreads out)."""
+    v = Verdict()
+    _gaps(v, t, "connected", ["concov"], COVERAGE, RANGES, TD_LONG, _above())
+    _gaps(v, t, "P_d", ["concov"], ["conb"], RANGES, TD_LONG, _above())
+    return v
+
+
+@claim("Figs. 2–3", "4.2. Performance comparison",
+       "These results imply that while hybrid schemes utilize the available resources "
+       "better than ConB, they might still require more resources than mTSP and CovB, "
+       "especially when the detection task dominates the mission times.",
+       "Where detection dominates, the hybrids trail mTSP and CovB.")
+def hybrids_trail_coverage(t: PairedTables, s: Settings) -> Verdict:
+    """Where detection dominates the mission: at the largest r_c (2000 m, where notification
+    is quickest) and the short t_d = 1000 s (where the search is not finished), for each
+    hybrid against each of mTSP and CovB, the hybrid's P_s minus the other's, averaged over
+    team sizes (paired; mTSP-ConB against mTSP above N_r), lies below 0."""
+    v = Verdict()
+    _gaps(v, t, "P_s", HYBRIDS, COVERAGE, RANGES[-1:], TD_SHORT, _below())
+    return v

@@ -1,0 +1,137 @@
+"""The claims of the abstract and of the introduction's summary of results."""
+
+from __future__ import annotations
+
+import itertools
+
+from sarlink.paper.claim import Settings, claim
+from sarlink.paper.evidence import Outcome, Verdict
+from sarlink.paper.experiments import DRONES, FIG5_RANGES, RANGES, TD_FIG3, TD_LONG, TD_SHORT
+from sarlink.paper.findings.helpers import (
+    _WHAT,
+    CONNECTIVITY,
+    COVERAGE,
+    HYBRID_SMALL_TEAMS,
+    HYBRIDS,
+    SMALL_TEAMS,
+    _above,
+    _change,
+    _gaps,
+    _half,
+    _label,
+    _level,
+    _rc,
+    _stat,
+)
+from sarlink.paper.paired import PairedTables
+
+
+@claim("Abstract", "Abstract",
+       "even though the coverage path-planning leads to lower search times",
+       "Coverage planners detect sooner than those that add connectivity.")
+def coverage_searches_faster(t: PairedTables, s: Settings) -> Verdict:
+    """At t_d = 1000 s (a search not yet finished) and every r_c: for mTSP and for CovB
+    against each of ConB, ConCov and mTSP-ConB, the difference in P_d averaged over team
+    sizes lies above 0 (mTSP against mTSP-ConB above N_r only)."""
+    v = Verdict()
+    _gaps(v, t, "P_d", COVERAGE, ("conb", "concov", "mtsp-conb"), RANGES, TD_SHORT, _above())
+    return v
+
+
+@claim("Abstract", "Abstract",
+       "schemes that incorporate end-end connectivity into path planning result in at least "
+       "50% better mission times for small communication ranges and lower number of drones",
+       "ConB, ConCov and mTSP-ConB need at most half the mission time of mTSP and CovB at "
+       "small r_c and few drones.")
+def connectivity_halves_mission_time(t: PairedTables, s: Settings) -> Verdict:
+    """At the smallest r_c (500 m) and t_d = 4000 s: for ConB and ConCov at N_m = 2 and 4, and
+    for mTSP-ConB at its two smallest teams that are not mTSP's (8 and 10 drones), half of
+    mTSP's and of CovB's mean mission time minus its own lies above 0 (paired)."""
+    v = Verdict()
+    sizes = {"conb": SMALL_TEAMS, "concov": SMALL_TEAMS, "mtsp-conb": HYBRID_SMALL_TEAMS}
+    _half(t, v, list(sizes), COVERAGE, RANGES[0], TD_LONG, sizes)
+    return v
+
+
+@claim("Introduction", "1. Introduction",
+       "as the number of drones increases, network connectivity improves significantly, "
+       "allowing coverage-based schemes to have better success probabilities",
+       "More drones connect more of mTSP's and CovB's team and raise their P_s.")
+def connectivity_improves_with_drones(t: PairedTables, s: Settings) -> Verdict:
+    """For mTSP and CovB at every r_c: the mean fraction of drones with a route to the BS
+    over t_d = 4000 s, and P_s at Fig. 3's t_d, each at N_m = 22 minus at N_m = 2 (paired),
+    lie above 0."""
+    v = Verdict()
+    first, last = DRONES[0], DRONES[-1]
+    for rc in RANGES:
+        for p in COVERAGE:
+            for measure, td in (("connected", TD_LONG), ("P_s", s.td_fig3)):
+                e = _change(t, measure, p, (first, rc, td), (last, rc, td)).estimate()
+                v.test(e.above(), f"{_rc(rc)}, {_label(p)}: {_WHAT[measure]} at t_d = "
+                                  f"{td:g} s, N_m = {last} minus N_m = {first}: {e}")
+    return v
+
+
+@claim("Introduction", "1. Introduction",
+       "under stringent connectivity conditions, i.e. if the communication range and number "
+       "of drones are low, connectivity-based distributed schemes outperform the "
+       "coverage-aware centralized and distributed schemes by at least 50% by enabling "
+       "notification as soon as the target is detected",
+       "At small r_c and few drones ConB and ConCov need at most half the mission time of "
+       "mTSP and CovB, and notify at detection more often.")
+def stringent_connectivity_wins(t: PairedTables, s: Settings) -> Verdict:
+    """At r_c = 500 m, t_d = 4000 s, N_m = 2 and 4: for ConB and ConCov against mTSP and
+    CovB, half the other's mean mission time minus its own lies above 0, and its immediate
+    notification minus the other's lies above 0 (paired, per team size)."""
+    v = Verdict()
+    rc = RANGES[0]
+    _half(t, v, CONNECTIVITY, COVERAGE, rc, TD_LONG, dict.fromkeys(CONNECTIVITY, SMALL_TEAMS))
+    for f in CONNECTIVITY:
+        for p in COVERAGE:
+            for n in SMALL_TEAMS:
+                e = (_stat(t, "immediate", f, n, rc, TD_LONG)
+                     - _stat(t, "immediate", p, n, rc, TD_LONG)).estimate()
+                v.test(e.above(), f"{_rc(rc)}, N_m = {n}: {_label(f)} − {_label(p)} immediate "
+                                  f"notification: {e}")
+    return v
+
+
+@claim("Introduction", "1. Introduction",
+       "The proposed hybrid schemes overcome the limitations of path planning that consider "
+       "only coverage or connectivity under certain conditions.",
+       "Each hybrid beats both its coverage parent and ConB in P_s somewhere.")
+def hybrids_beat_both_somewhere(t: PairedTables, s: Settings) -> Verdict:
+    """For ConCov (against CovB and ConB) and mTSP-ConB (against mTSP and ConB): at some grid
+    point (N_m, r_c, t_d = 1000, 2000 or 4000 s) its P_s exceeds both (paired, Bonferroni
+    over the points and the two comparisons: 95% jointly). Contradicted if at every point it
+    falls significantly below one of them; undecided otherwise."""
+    v = Verdict()
+    points = list(itertools.product(DRONES, RANGES, (TD_SHORT, TD_FIG3, TD_LONG)))
+    level = _level(2 * len(points))
+    for h, native in HYBRIDS.items():
+        wins, losses = [], 0
+        for n, rc, td in points:
+            mine = _stat(t, "P_s", h, n, rc, td)
+            d = [(mine - _stat(t, "P_s", o, n, rc, td)).estimate(level) for o in (native, "conb")]
+            if all(e.lo > 0 and not e.tied for e in d):
+                wins.append(f"N_m = {n}, {_rc(rc)}, t_d = {td:g} s ({d[0]}, {d[1]})")
+            losses += any(e.hi < 0 for e in d)
+        outcome = (Outcome.HOLDS if wins else Outcome.CONTRADICTED if losses == len(points)
+                   else Outcome.UNDECIDED)
+        v.test(outcome, f"{_label(h)} − {_label(native)} and − ConB in P_s: above both at "
+                        f"{len(wins)} of {len(points)} points"
+                        + (f", e.g. {wins[0]}" if wins else "")
+                        + f"; significantly below one of them at {losses}")
+    return v
+
+
+@claim("Introduction", "1. Introduction",
+       "coverage path planners might require notification delay tolerance",
+       "mTSP's and CovB's notification comes later after detection than ConB's and ConCov's.")
+def coverage_needs_delay_tolerance(t: PairedTables, s: Settings) -> Verdict:
+    """At t_d = 4000 s and Fig. 5's ranges (500, 1000 m): for mTSP and CovB against ConB and
+    ConCov, the mean notification delay (t_notify − t_detect of the runs notified) minus the
+    other's, averaged over team sizes, lies above 0."""
+    v = Verdict()
+    _gaps(v, t, "delay", COVERAGE, CONNECTIVITY, FIG5_RANGES, TD_LONG, _above())
+    return v
