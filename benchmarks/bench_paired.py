@@ -217,7 +217,7 @@ def main() -> None:
     if args.out:
         results_file.write(args.out, f"Paired timing: this tree against {args.rev}", "\n".join([
             f"Reading {args.reading}, seed 1, runs 0-{args.runs - 1}, {args.rounds} rounds"
-            + (f", range-free flights scanned at {args.ranges} m" if read_at else "")
+            + (f", range-free flights scanned at {args.ranges} m" if scan_at else "")
             + ". Speed-up = old time / new time, the geometric mean of the medians of the "
             "paired ratios in the two compile orders; identical = runs whose every output is "
             "bit for bit the same.", "", "```", *lines, "```"]))
