@@ -48,7 +48,7 @@ from rich.text import Text
 from sarlink import storage
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.engine.build import radio_identity
+from sarlink.engine.hooks import radio_identity
 from sarlink.engine.radios import get_radio
 from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner
