@@ -122,7 +122,8 @@ def check_rule(rule: DistributedRule | str, *, drones: Sequence[int] = (4,), run
     of a registered planner whose rule it is) against flights of a team that runs it.
 
     ``ranges`` are the two ranges a ``range_free`` rule is flown at; ``ignores_reporting`` is
-    checked at the first. ``params`` are further flat mission parameters.
+    checked at the first, or at ``rc`` if given. ``params`` are further flat mission
+    parameters.
     """
     rule = _rule(rule)
     unknown = set(rule.readings) - set(Readings.model_fields)
@@ -130,10 +131,10 @@ def check_rule(rule: DistributedRule | str, *, drones: Sequence[int] = (4,), run
                          f"sarlink.config.Readings ({', '.join(Readings.model_fields)})")
     for n in drones:
         for run in range(runs):
-            fly = {"drones": n, "horizon": horizon, **params}
+            fly = {"drones": n, "horizon": horizon, "rc": ranges[0], **params}
             where = f"run {run} of seed {seed} with {n} drones"
             if rule.range_free:
-                near, far = (_fly(rule, seed, run, rc=rc, on_detect="continue", **fly)
+                near, far = (_fly(rule, seed, run, **{**fly, "rc": rc, "on_detect": "continue"})
                              for rc in ranges)
                 k = _parting(near, far)
                 assert k is None and (near.t_detect, near.detector) == (
@@ -141,8 +142,8 @@ def check_rule(rule: DistributedRule | str, *, drones: Sequence[int] = (4,), run
                     f"rule {rule.name!r} declares range_free but flies differently at r_c = "
                     f"{ranges[0]:g} m and {ranges[1]:g} m ({where}, from step {k})")
             if rule.ignores_reporting:
-                silent = _fly(rule, seed, run, rc=ranges[0], on_detect="continue", **fly)
-                loud = _fly(rule, seed, run, rc=ranges[0], on_detect="report", **fly)
+                silent, loud = (_fly(rule, seed, run, **{**fly, "on_detect": mode})
+                                for mode in ("continue", "report"))
                 assert loud.trajectory is not None
                 reporting = (loud.trajectory.mode == Mode.REPORTING).any(axis=1)
                 first = int(np.argmax(reporting)) if reporting.any() else None
