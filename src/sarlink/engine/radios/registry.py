@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 from sarlink.config import ConfigError
-from sarlink.engine.hooks import RadioModel, radio_identity
+from sarlink.engine.hooks import RadioModel, python_function
 from sarlink.registry import SARLINK, Registry, caller_origin
 
 __all__ = ["RADIOS", "get_radio", "radio_names", "register_radio"]
@@ -19,10 +19,15 @@ def _check(obj: object, origin: str) -> None:
     if not isinstance(obj, RadioModel):
         raise ConfigError(f"register_radio takes a sarlink RadioModel, got {obj!r}")
     if obj.range_free and origin != SARLINK and (obj.params is not None or not any(
-            e.origin == SARLINK and e.obj.range_free
-            and radio_identity(e.obj) == radio_identity(obj) for e in RADIOS.entries().values())):
+            e.origin == SARLINK and e.obj.range_free and _fades(e.obj) == _fades(obj)
+            for e in RADIOS.entries().values())):
         raise ConfigError(f"radio model {obj.name!r}: range_free is only for the built-in "
                           "log-normal hooks (the range scan redraws their fades); leave it False")
+
+
+def _fades(model: RadioModel) -> tuple[object, ...]:
+    """The hooks that draw a model's thresholds, which the range scan replaces by its own."""
+    return tuple(python_function(f) for f in (model.init, model.update, model.nominal))
 
 
 def _describe(model: RadioModel) -> dict[str, Any]:
