@@ -44,7 +44,7 @@ def experiment(rcs: list[float], runs: int, drones: int) -> Experiment:
                                  "grid": {"rc": rcs}})
 
 
-assert plugins_in_code() == ((), ())  # nothing to hand to a worker: one process is the same
+assert not any(plugins_in_code().values())  # nothing to hand to a worker: one process is the same
 
 
 def timed_sweep(rcs: list[float], runs: int, drones: int, folder: Path) -> tuple[float,

@@ -27,3 +27,14 @@ def _private_plan_cache(tmp_path_factory: pytest.TempPathFactory) -> None:
     root = base.parent if "PYTEST_XDIST_WORKER" in os.environ else base
     (root / "sarlink-cache").mkdir(exist_ok=True)
     os.environ["SARLINK_CACHE_DIR"] = str(root / "sarlink-cache")
+
+
+@pytest.fixture
+def fresh_registries(monkeypatch: pytest.MonkeyPatch) -> None:
+    """What a test registers, or loads from entry points, does not outlive it (every kind)."""
+    from sarlink.registry import KINDS
+
+    for registry in KINDS.values():
+        monkeypatch.setattr(registry, "_entries", dict(registry._entries))
+        monkeypatch.setattr(registry, "_broken", dict(registry._broken))
+        monkeypatch.setattr(registry, "_loaded", registry._loaded)

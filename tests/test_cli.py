@@ -85,3 +85,19 @@ def test_a_single_simulation_does_not_load_pandas() -> None:
             "assert sarlink.sweep.__module__ == 'sarlink.execution'\n"
             "assert 'pandas' in sys.modules\n")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_plugins_lists_every_kind_and_planners_is_the_same_listing() -> None:
+    from sarlink.registry import KINDS
+
+    text = runner.invoke(app, ["plugins"])
+    assert text.exit_code == 0, text.output
+    for registry in KINDS.values():
+        assert f"{registry.label}s ({registry.group})" in text.output
+    data = json.loads(runner.invoke(app, ["plugins", "--json"]).output)
+    assert data.keys() == {f"{kind}s" for kind in KINDS} | {"broken"}
+    assert [p["name"] for p in data["planners"]][:5] == ["mtsp", "covb", "conb", "mtsp-conb",
+                                                         "concov"]
+    assert {r["name"]: r["origin"] for r in data["radios"]} == {"disc": "sarlink",
+                                                                "shadowing": "sarlink"}
+    assert json.loads(runner.invoke(app, ["planners", "--json"]).output) == data

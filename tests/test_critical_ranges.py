@@ -20,7 +20,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from naive import component
-from sarlink import ConfigError, Experiment, Mission, execution, storage
+from sarlink import ConfigError, Experiment, Mission, execution, register_radio, storage
 from sarlink.at_range import at_range
 from sarlink.engine import RadioModel, sharing
 from sarlink.engine.radios import lognormal
@@ -301,12 +301,14 @@ def halved_init(p: object, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
     return lognormal.init(p, rp, m, mp) / 4.0
 
 
+@pytest.mark.usefixtures("fresh_registries")
 def test_only_the_built_in_radio_may_be_range_free() -> None:
-    assert RadioModel("again", lognormal.init, lognormal.update, lognormal.nominal,
-                      range_free=True).range_free
+    assert register_radio(RadioModel("again", lognormal.init, lognormal.update,
+                                     lognormal.nominal, range_free=True)).range_free
     assert not RadioModel("other", halved_init, lognormal.update, lognormal.nominal).range_free
     with pytest.raises(ConfigError, match="range_free is only for the built-in"):
-        RadioModel("other", halved_init, lognormal.update, lognormal.nominal, range_free=True)
+        register_radio(RadioModel("other", halved_init, lognormal.update, lognormal.nominal,
+                                  range_free=True))
 
 
 def test_at_range_evaluates_unflown_ranges_as_flights_would(tmp_path: Path) -> None:

@@ -21,8 +21,8 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError, Mission, simulate
 from sarlink.cli import app
-from sarlink.engine.rules import conb, covb
 from sarlink.env import OWN, BatchEnv, EngineState, Rewards, env, feature_names, parallel_env
+from sarlink.planners.rules import conb, covb
 
 SMALL = Mission.build(planner="covb", drones=5, rc=500.0, horizon=300.0)
 RULES = {"covb": covb, "conb": conb}

@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from sarlink.planners import registry
-from sarlink.testing import check_planner
+from sarlink.planners.registry import PLANNERS
+from sarlink.testing import check_planner, check_rule
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -42,15 +42,19 @@ def _sarlink(target: Path, *args: str) -> str:
                           check=True, capture_output=True, text=True).stdout
 
 
-def test_sarlink_planners_lists_the_installed_plug_ins(installed: Path) -> None:
-    listed = {p["name"]: p for p in json.loads(_sarlink(installed, "planners", "--json"))[
-        "planners"]}
+@pytest.mark.parametrize("command", ["plugins", "planners"])
+def test_sarlink_plugins_lists_the_installed_plug_ins(installed: Path, command: str) -> None:
+    data = json.loads(_sarlink(installed, command, "--json"))
+    listed = {p["name"]: p for p in data["planners"]}
     for name, kind in (("rays", "route"), ("tether", "rule")):
         assert listed[name]["kind"] == kind
         assert listed[name]["origin"] == f"sarlink-example-plugin 0.1.0 (entry point {name})"
         assert not listed[name]["paper"]
+    assert {r["name"] for r in data["radios"]} >= {"disc", "shadowing"}
+    assert data["broken"] == []
 
 
+@pytest.mark.usefixtures("fresh_registries")
 @pytest.mark.parametrize("name", ["rays", "tether"])
 def test_each_plug_in_simulates_by_name_and_keeps_the_contract(
         installed: Path, name: str, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -58,6 +62,7 @@ def test_each_plug_in_simulates_by_name_and_keeps_the_contract(
                               "--rc", "500", "--td", "600", "--json"))
     assert out["planner"] == name and out["drones"] == 4
     monkeypatch.syspath_prepend(str(installed))
-    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
-    monkeypatch.setattr(registry, "_LOADED", False)
+    monkeypatch.setattr(PLANNERS, "_loaded", False)
     check_planner(name, drones=(1, 5), runs=1, horizon=900.0, rc=500.0)
+    if name == "tether":
+        check_rule(name, runs=1, horizon=900.0)

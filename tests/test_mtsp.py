@@ -20,9 +20,9 @@ import sarlink.mtsp as mtsp
 import sarlink.mtsp.cache as plan_cache
 from sarlink import Mission
 from sarlink.config import ConfigError
-from sarlink.engine.rules import CONB
 from sarlink.mtsp import MtspPlan, grid_cells, plan_for, solve
 from sarlink.planners import get_planner
+from sarlink.planners.rules.conb import CONB
 
 GRID = grid_cells(4000.0, 500.0)
 BS = (2000.0, 2000.0)

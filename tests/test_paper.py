@@ -24,7 +24,6 @@ from typer.testing import CliRunner
 from sarlink import ConfigError
 from sarlink.cli import app
 from sarlink.config import READINGS, Experiment, Mission
-from sarlink.engine.rules import COVB
 from sarlink.engine.streams import plan_seed
 from sarlink.execution import sweep_all
 from sarlink.metrics import MEASURES, run_values, summarize, wilson
@@ -41,8 +40,15 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, fig1, section3
-from sarlink.planners import PAPER_PLANNERS, RulePlanner, get_planner, planner_names, registry
+from sarlink.planners import (
+    PAPER_PLANNERS,
+    RulePlanner,
+    get_planner,
+    planner_names,
+    register_planner,
+)
 from sarlink.planners.patterns import PATTERNS
+from sarlink.planners.rules.covb import COVB
 
 # -- the end-to-end run --------------------------------------------------------------------------
 
@@ -369,9 +375,9 @@ MADE_UP = RulePlanner("made-up", "MadeUp", COVB, colour="#123456", marker="h")
 """A made-up planner: CovB's rule under another name, colour and marker."""
 
 
-def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the_paper(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setitem(registry._ENTRIES, "made-up", registry.Entry(MADE_UP, "test"))
+@pytest.mark.usefixtures("fresh_registries")
+def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the_paper() -> None:
+    register_planner(MADE_UP)
     assert planner_names()[-1] == "made-up"
     others = set(planner_names()) - set(PAPER_PLANNERS)
     assert {p.name for p in PATTERNS} | {"made-up"} <= others

@@ -1,4 +1,4 @@
-"""The rules phase (sarlink.engine.rules) called directly: CovB's force against Eq. 6 written in
+"""The rules phase (sarlink.planners.rules) called directly: CovB's force against Eq. 6 written in
 angles, ConB's prediction against a breadth-first search on extrapolated positions, ConB's
 direction against Eqs. 9-11 (contact times from the quadratic's roots), ConCov's blend
 against Eq. 12, each also on hand-computed cases (docs/model.md, Planners and Readings).
@@ -22,10 +22,10 @@ from sarlink.engine.geometry import FAR
 from sarlink.engine.graph import bs_component, links
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import LANDED, RETURNING, SEARCHING, Params
-from sarlink.engine.rules import conb, concov, covb
-from sarlink.engine.rules.conb import check_continuously, conb_headings, predict_routes
-from sarlink.engine.rules.concov import blend
-from sarlink.engine.rules.covb import covb_force, flying_drones
+from sarlink.planners.rules import conb, concov, covb
+from sarlink.planners.rules.conb import check_continuously, conb_headings, predict_routes
+from sarlink.planners.rules.concov import blend
+from sarlink.planners.rules.covb import covb_force, flying_drones
 
 ANGLE = st.floats(-math.pi, math.pi)
 P = params()  # V = 5 m/s, dt = 1 s, r = 500 m, T_max = 4000 s, BS at (2000, 2000)

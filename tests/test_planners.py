@@ -1,7 +1,8 @@
-"""The planner registry, and the contract every registered planner keeps (sarlink.testing).
+"""The planner registry, and the contracts every registered planner, rule and radio model
+keeps (sarlink.testing).
 
-Nothing here lists the planners: a planner added to sarlink or installed as a plug-in is
-checked by the same tests, the way VMAS tests every scenario.
+Nothing here lists them: a planner, rule or radio model added to sarlink or installed as a
+plug-in is checked by the same tests, the way VMAS tests every scenario.
 """
 
 from __future__ import annotations
@@ -10,8 +11,9 @@ import numpy as np
 import pytest
 
 from sarlink import ConfigError, Mission, RoutePlanner, get_planner, planner_names, simulate
+from sarlink.engine.radios import radio_names
 from sarlink.planners import PAPER_PLANNERS, registry
-from sarlink.testing import check_planner, check_run
+from sarlink.testing import check_planner, check_radio, check_rule, check_run
 
 
 def test_the_paper_planners_come_first_in_the_order_of_its_legends() -> None:
@@ -41,8 +43,8 @@ def _diagonal(mission: Mission) -> list[np.ndarray]:
             for i in range(mission.team.drones)]
 
 
-def test_a_planner_registered_in_code_flies_by_name(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
+@pytest.mark.usefixtures("fresh_registries")
+def test_a_planner_registered_in_code_flies_by_name() -> None:
     planner = RoutePlanner("diagonal", "Diagonal", _diagonal, colour="#000000", marker="x")
     assert registry.register_planner(planner) is planner
     assert planner_names()[-1] == "diagonal"
@@ -64,11 +66,41 @@ def test_every_registered_planner_keeps_the_contract(name: str) -> None:
     check_planner(name, drones=(1, 6), runs=2, horizon=1200.0, rc=500.0)
 
 
-def test_the_contract_catches_a_planner_that_leaves_the_area(
-        monkeypatch: pytest.MonkeyPatch) -> None:
+RULES = {get_planner(n).rule.name: n for n in planner_names()  # type: ignore[union-attr]
+         if get_planner(n).rule is not None}
+"""Every rule a registered planner flies, with one planner that flies it."""
+
+
+@pytest.mark.parametrize("planner", RULES.values(), ids=RULES.keys())
+def test_every_registered_rule_keeps_its_declarations(planner: str) -> None:
+    check_rule(planner, runs=1, horizon=900.0)
+
+
+def _channel_of(name: str, channel: dict) -> bool:
+    """Whether the radio model ``name`` takes these channel settings (the disc has no fades)."""
+    try:
+        Mission.build(radio=name, **channel)
+    except ConfigError:
+        return False
+    return True
+
+
+CHANNELS = [{"sigma": 0.0}, *({"sigma": 4.0, "shadowing": how}
+                              for how in ("correlated", "period", "run"))]
+RADIOS = [(name, channel) for name in radio_names() for channel in CHANNELS
+          if _channel_of(name, channel)]
+"""Every registered radio model with every channel setting it takes."""
+
+
+@pytest.mark.parametrize(("name", "channel"), RADIOS)
+def test_every_registered_radio_model_keeps_the_contract(name: str, channel: dict) -> None:
+    check_radio(name, **channel)
+
+
+@pytest.mark.usefixtures("fresh_registries")
+def test_the_contract_catches_a_planner_that_leaves_the_area() -> None:
     """The contract can fail: a run whose drone is outside the area is caught (the route
     check already refuses waypoints outside, so the run is altered after the flight)."""
-    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
     registry.register_planner(RoutePlanner("ok", "OK", _diagonal))
     check_planner("ok", drones=(2,), runs=1, horizon=600.0)
     result = simulate(Mission.build(planner="ok", drones=2, horizon=600.0), trajectory=True)

@@ -1,10 +1,14 @@
 """Plug-ins end to end: rules, radio models and planners defined outside sarlink
 (tests/plugins/), registered in code or found through entry points, at the engine's full
-behaviour; and bad plug-ins, each reported in one line naming the plug-in."""
+behaviour; one registry for every kind; the contract catching false declarations; and bad
+plug-ins, each reported in one line naming the plug-in."""
 
 from __future__ import annotations
 
+import importlib
+import pkgutil
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -26,25 +30,23 @@ from sarlink import (
     simulate,
     sweep,
 )
-from sarlink.engine import radios
+from sarlink.engine import RadioModel, radios
+from sarlink.engine.radios import DISC, lognormal
 from sarlink.engine.streams import run_streams
-from sarlink.planners import registry
+from sarlink.planners import registry, rules
+from sarlink.registry import KINDS, adopt_plugins, plugins_in_code
+from sarlink.testing import check_rule
 
 PLUGINS = Path(__file__).parent / "plugins"
 sys.path.insert(0, str(PLUGINS))
 import bad  # noqa: E402
 from covb_again import PLANNER  # noqa: E402
-from radios_outside import CUT, FULL, HALF  # noqa: E402
+from homebound import HOMEBOUND  # noqa: E402
+from liars import CLINGY  # noqa: E402
+from radios_outside import CUT, FULL, HALF, IMPOSTOR  # noqa: E402
 from random_walk import RANDOM_WALK  # noqa: E402
 
-
-@pytest.fixture(autouse=True)
-def fresh_registries(monkeypatch: pytest.MonkeyPatch) -> None:
-    """What a test registers does not outlive it."""
-    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
-    monkeypatch.setattr(registry, "_BROKEN", dict(registry._BROKEN))
-    monkeypatch.setattr(radios._REGISTRY, "models", dict(radios._REGISTRY.models))
-    monkeypatch.setattr(radios._REGISTRY, "origins", dict(radios._REGISTRY.origins))
+pytestmark = pytest.mark.usefixtures("fresh_registries")  # what a test registers, it alone sees
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -118,10 +120,11 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
                                    "Version: 1.2\n")
     (info / "entry_points.txt").write_text(
         "[sarlink.planners]\ncovb-again = covb_again:PLANNER\nbroken = no_such_module:X\n"
-        "[sarlink.radios]\ncut = radios_outside:CUT\n")
+        "[sarlink.radios]\ncut = radios_outside:CUT\ndisc = radios_outside:IMPOSTOR\n"
+        "not-a-radio = covb_again:PLANNER\n")
     monkeypatch.syspath_prepend(str(tmp_path))
-    monkeypatch.setattr(registry, "_LOADED", False)
-    monkeypatch.setattr(radios._REGISTRY, "loaded", False)
+    for kind in KINDS.values():
+        monkeypatch.setattr(kind, "_loaded", False)
     assert "covb-again" in planner_names()
     origin = registry.planner_entries()["covb-again"].origin
     assert origin == "sarlink-testplug 1.2 (entry point covb-again)"
@@ -130,9 +133,94 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
                        r"\(entry point broken\): ModuleNotFoundError"):
         get_planner("nope")
     assert simulate(Mission.build(planner="covb-again", radio="cut-bs")).t_notify is None
-    from sarlink.cli.planners import listing
+    from sarlink.cli.plugins import listing
 
-    assert [b["entry_point"] for b in listing()["broken"]] == ["broken"]
+    broken = {(b["kind"], b["entry_point"]): b["error"] for b in listing()["broken"]}
+    assert broken.keys() == {("planner", "broken"), ("radio", "disc"), ("radio", "not-a-radio")}
+    assert broken["radio", "disc"].endswith("radio model name 'disc' is taken (from sarlink)")
+    assert "register_radio takes a sarlink RadioModel" in broken["radio", "not-a-radio"]
+    assert radios.get_radio("disc") is DISC
+
+
+# -- one registry for every kind ---------------------------------------------------------------
+
+
+def test_a_taken_name_is_refused_without_replace_in_every_kind() -> None:
+    with pytest.raises(ConfigError, match=r"radio model name 'disc' is taken \(from sarlink\); "
+                       "pass replace=True"):
+        register_radio(IMPOSTOR)
+    with pytest.raises(ConfigError, match=r"planner name 'covb' is taken \(from sarlink\)"):
+        register_planner(replace(PLANNER, name="covb"))
+    assert register_radio(DISC) is DISC and register_planner(PLANNER) is PLANNER
+    assert register_planner(PLANNER) is PLANNER  # the same object again: nothing changes
+    assert radios.RADIOS.entries()["disc"].origin == "sarlink"
+    register_radio(IMPOSTOR, replace=True)
+    assert radios.get_radio("disc") is IMPOSTOR
+    assert radios.RADIOS.entries()["disc"].origin == "code (test_plugins)"
+
+
+def test_only_sarlinks_own_radio_hooks_may_be_declared_range_free() -> None:
+    """The range scan redraws the built-in log-normal fades whatever the model's hooks: a model
+    from outside declaring range_free is refused unless its hooks are those very ones."""
+    again = RadioModel("again", lognormal.init, lognormal.update, lognormal.nominal,
+                       static=lognormal.static, range_free=True)
+    assert register_radio(again).range_free
+    with pytest.raises(ConfigError, match="radio model 'cut-bs': range_free is only for the "
+                       "built-in log-normal hooks"):
+        register_radio(replace(CUT, range_free=True))
+
+
+def test_what_is_registered_in_code_is_adopted_by_workers_and_nothing_else() -> None:
+    assert not any(plugins_in_code().values())  # the built-ins are sarlink's, not code's
+    register_radio(CUT)
+    register_planner(PLANNER)
+    found = plugins_in_code()
+    assert {k: [e.obj.name for e in v] for k, v in found.items()} == {
+        "radio": ["cut-bs"], "planner": ["covb-again"]}
+    adopt_plugins(found)  # the same objects: nothing changes
+    register_planner(replace(PLANNER, label="Other"), replace=True)
+    with pytest.raises(ConfigError, match="planner name 'covb-again' means another planner in "
+                       "the worker process than in the caller"):
+        adopt_plugins(found)
+
+
+def test_the_registries_hold_what_is_on_disk() -> None:
+    """Every module of the built-in rules registers a planner flying its own rule, every
+    built-in planner with a rule flies one of those, and the radio models sarlink registers
+    are those its radio modules define."""
+    modules = [importlib.import_module(f"{rules.__name__}.{m.name}")
+               for m in pkgutil.iter_modules(rules.__path__)]
+    assert modules and all(registry.planner_entries()[m.PLANNER.name].origin == "sarlink"
+                           and m.PLANNER.rule.decide.__module__ == m.__name__ for m in modules)
+    built_in = [e.obj for e in registry.planner_entries().values() if e.origin == "sarlink"]
+    assert {p.rule.decide.__module__ for p in built_in if p.rule} == {m.__name__ for m in modules}
+    defined = {obj.name for m in pkgutil.iter_modules(radios.__path__)
+               for obj in vars(importlib.import_module(f"{radios.__name__}.{m.name}")).values()
+               if isinstance(obj, RadioModel)}
+    assert defined == {n for n, e in radios.RADIOS.entries().items() if e.origin == "sarlink"}
+
+
+def test_the_contract_catches_a_rule_that_declares_range_free_but_reads_the_links() -> None:
+    with pytest.raises(AssertionError, match="rule 'clingy' declares range_free but flies "
+                       "differently at r_c = 300 m and 1500 m"):
+        check_rule(CLINGY, runs=1, horizon=900.0)
+    check_rule(replace(CLINGY, range_free=False), runs=1, horizon=900.0)  # the truth passes
+
+
+def test_the_contract_catches_a_rule_that_declares_ignores_reporting_but_reads_it() -> None:
+    rule = HOMEBOUND.rule
+    assert rule is not None
+    with pytest.raises(AssertionError, match="rule 'homebound' declares ignores_reporting but "
+                       "flies differently with on_detect = report before any drone reports"):
+        check_rule(replace(rule, ignores_reporting=True), runs=1, horizon=900.0)
+    check_rule(rule, runs=1, horizon=900.0)
+
+
+def test_the_contract_checks_that_readings_are_fields_of_readings() -> None:
+    with pytest.raises(AssertionError, match=r"rule 'random-walk': readings \['conb_chek'\] "
+                       "are not fields of sarlink.config.Readings"):
+        check_rule(replace(RANDOM_WALK.rule, readings=("conb_chek",)), runs=1, horizon=600.0)
+    check_rule(RANDOM_WALK.rule, runs=1, horizon=600.0)
 
 
 # -- bad plug-ins: one line naming the plug-in and what is wrong ------------------------------

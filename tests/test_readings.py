@@ -23,13 +23,13 @@ from sarlink.config import DEFAULT_READING, READINGS, Experiment, Readings
 from sarlink.engine import Prepared, Steering
 from sarlink.engine.codes import SHADOWING_CODES
 from sarlink.engine.radios import lognormal
-from sarlink.engine.rules import CONB
 from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import plan_seed, run_streams
 from sarlink.paper import ReproductionResult, reproduce
 from sarlink.paper.experiments import EXPERIMENTS
 from sarlink.paper.variants import SYMBOL, reaches, variants
 from sarlink.planners import get_planner
+from sarlink.planners.rules.conb import CONB
 
 FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 

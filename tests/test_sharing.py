@@ -20,7 +20,6 @@ from hypothesis import strategies as st
 from sarlink import Experiment, Mission, execution, register_planner, storage
 from sarlink.engine import sharing
 from sarlink.execution import sweep, sweep_all
-from sarlink.planners import registry
 from sarlink.simulation import prepare
 from test_critical_ranges import same_outcome
 
@@ -117,10 +116,10 @@ def test_sweeps_with_and_without_reporting_share_their_runs(
     pd.testing.assert_frame_equal(again, apart[0])  # the same mission twice in one call
 
 
-def test_a_rule_that_reads_on_detect_is_flown(monkeypatch: pytest.MonkeyPatch) -> None:
+@pytest.mark.usefixtures("fresh_registries")
+def test_a_rule_that_reads_on_detect_is_flown() -> None:
     """Homebound heads for the BS when its team will report: its reporting runs part from the
     others at take-off. Undeclared, it is flown; declared (a lie), the run taken differs."""
-    monkeypatch.setattr(registry, "_ENTRIES", dict(registry._ENTRIES))
     register_planner(HOMEBOUND)
     base = Mission.build(planner="homebound", drones=3, rc=200.0, horizon=600.0)
     pb, pt = prepare(base), prepare(base.replace(on_detect="report", stop="notified"))

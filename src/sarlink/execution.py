@@ -38,7 +38,8 @@ from sarlink import storage
 from sarlink.compile_times import compile_estimate, describe_parts, record_compile
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.engine.build import kernel_for, on_disk, radio_identity
+from sarlink.engine.build import kernel_for, on_disk
+from sarlink.engine.hooks import radio_identity
 from sarlink.engine.radios import get_radio
 from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner

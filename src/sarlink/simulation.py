@@ -6,38 +6,16 @@ The engine knows rules and routes, not planners; this layer resolves the mission
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine import Prepared, RadioModel, Scenario, Steering, get_radio, register_radio
-from sarlink.engine.radios import radios_in_code
-from sarlink.planners import Planner, get_planner
-from sarlink.planners.registry import adopt, registered_in_code
+from sarlink.engine import Prepared, Scenario, Steering, get_radio
+from sarlink.planners import get_planner
+from sarlink.registry import Plugins, adopt_plugins, plugins_in_code
 from sarlink.result import RunResult
 
 __all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prepare", "simulate",
            "warm_up"]
-
-
-class Plugins(NamedTuple):
-    """The plug-ins registered in code in this process, to register in worker processes."""
-
-    planners: tuple[Planner, ...]
-    radios: tuple[RadioModel, ...]
-
-
-def plugins_in_code() -> Plugins:
-    """What :func:`sarlink.register_planner` and :func:`sarlink.register_radio` added here."""
-    return Plugins(registered_in_code(), radios_in_code())
-
-
-def adopt_plugins(plugins: Plugins) -> None:
-    """Register, in a worker process, the plug-ins its caller registered in code."""
-    adopt(plugins.planners)
-    for radio in plugins.radios:
-        register_radio(radio)
 
 
 def check_mission(mission: Mission) -> None:

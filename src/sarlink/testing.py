@@ -1,14 +1,23 @@
-"""The contract every planner passes, for sarlink's tests and a plug-in author's own.
+"""The contract every plug-in keeps, for sarlink's tests and a plug-in author's own: each
+helper flies or calls a registered plug-in and raises an ``AssertionError`` naming what broke.
 
-``check_planner("my-planner")`` flies a registered planner on a few teams and runs and raises
-an ``AssertionError`` naming what broke: drones leave the area, the BS is notified before the
-target is detected, the same ``(seed, run)`` flies differently, or the planner's runs cannot
-be replayed in the browser page. In a plug-in's test suite::
+- :func:`check_planner`: drones stay in the area, the BS is not notified before the target is
+  detected, the same ``(seed, run)`` flies the same, and the runs replay in the browser page;
+- :func:`check_rule`: every declaration of a :class:`~sarlink.DistributedRule` holds in
+  flight (``readings`` are fields of :class:`~sarlink.config.Readings`; a ``range_free`` rule
+  flies the same at two ranges; an ``ignores_reporting`` one flies the same with and without
+  reporting until a drone reports): a false one makes sarlink's shortcuts give wrong rows;
+- :func:`check_radio`: a :class:`~sarlink.RadioModel`'s thresholds are finite, symmetric and
+  zero towards the padding, its nominal range positive, a ``static`` model's never change
+  after step 0, and a ``range_free`` one's scale with r_c².
 
-    from sarlink.testing import check_planner
+In a plug-in's test suite::
+
+    from sarlink.testing import check_planner, check_rule
 
     def test_my_planner_keeps_the_contract():
         check_planner("my-planner")
+        check_rule("my-planner")  # the rule it flies
 """
 
 from __future__ import annotations
@@ -20,13 +29,16 @@ from typing import Any
 
 import numpy as np
 
-from sarlink.config import Mission
+from sarlink.config import Mission, Readings
+from sarlink.engine import Prepared, RadioModel, Steering, get_radio
+from sarlink.engine.codes import Mode
+from sarlink.engine.hooks import DistributedRule
 from sarlink.planners import get_planner
 from sarlink.playback import replay
 from sarlink.result import RunResult
 from sarlink.simulation import simulate
 
-__all__ = ["check_planner", "check_run"]
+__all__ = ["check_planner", "check_radio", "check_rule", "check_run"]
 
 
 def check_run(result: RunResult, mission: Mission) -> None:
@@ -76,3 +88,118 @@ def check_planner(name: str, *, drones: Sequence[int] = (1, 4, 10), runs: int = 
     with tempfile.TemporaryDirectory() as tmp:
         page = replay(result, mission).write(Path(tmp) / "replay.html").read_text()
     assert planner.label in page, f"{name}: the replay page does not name {planner.label!r}"
+
+
+def _rule(rule: DistributedRule | str) -> DistributedRule:
+    if isinstance(rule, DistributedRule):
+        return rule
+    found = get_planner(rule).rule
+    assert found is not None, f"planner {rule!r} flies routes only: it has no rule to check"
+    return found
+
+
+def _fly(rule: DistributedRule, seed: int, run: int, **params: Any) -> RunResult:
+    """One run of a team whose every drone runs ``rule``."""
+    mission = Mission.build(planner=rule.name, **params)
+    return Prepared.build(mission, Steering(rule=rule)).run(seed, run, trajectory=True)
+
+
+def _parting(a: RunResult, b: RunResult, steps: int | None = None) -> int | None:
+    """The first of the first ``steps`` steps (all by default) at which the two flights
+    differ in position or heading; ``None`` if they do not."""
+    ta, tb = a.trajectory, b.trajectory
+    assert ta is not None and tb is not None
+    k = min(len(ta.t), len(tb.t), len(ta.t) if steps is None else steps)
+    differs = ((ta.positions[:k] != tb.positions[:k]).any(axis=(1, 2))
+               | (ta.headings[:k] != tb.headings[:k]).any(axis=1))
+    return int(np.argmax(differs)) if differs.any() else None
+
+
+def check_rule(rule: DistributedRule | str, *, drones: Sequence[int] = (4,), runs: int = 2,
+               horizon: float = 1200.0, seed: int = 7,
+               ranges: tuple[float, float] = (300.0, 1500.0), **params: Any) -> None:
+    """Check every declaration of ``rule`` (a :class:`~sarlink.DistributedRule`, or the name
+    of a registered planner whose rule it is) against flights of a team that runs it.
+
+    ``ranges`` are the two ranges a ``range_free`` rule is flown at; ``ignores_reporting`` is
+    checked at the first, or at ``rc`` if given. ``params`` are further flat mission
+    parameters.
+    """
+    rule = _rule(rule)
+    unknown = set(rule.readings) - set(Readings.model_fields)
+    assert not unknown, (f"rule {rule.name!r}: readings {sorted(unknown)} are not fields of "
+                         f"sarlink.config.Readings ({', '.join(Readings.model_fields)})")
+    for n in drones:
+        for run in range(runs):
+            fly = {"drones": n, "horizon": horizon, "rc": ranges[0], **params}
+            where = f"run {run} of seed {seed} with {n} drones"
+            if rule.range_free:
+                near, far = (_fly(rule, seed, run, **{**fly, "rc": rc, "on_detect": "continue"})
+                             for rc in ranges)
+                k = _parting(near, far)
+                assert k is None and (near.t_detect, near.detector) == (
+                    far.t_detect, far.detector), (
+                    f"rule {rule.name!r} declares range_free but flies differently at r_c = "
+                    f"{ranges[0]:g} m and {ranges[1]:g} m ({where}, from step {k})")
+            if rule.ignores_reporting:
+                silent, loud = (_fly(rule, seed, run, **{**fly, "on_detect": mode})
+                                for mode in ("continue", "report"))
+                assert loud.trajectory is not None
+                reporting = (loud.trajectory.mode == Mode.REPORTING).any(axis=1)
+                first = int(np.argmax(reporting)) if reporting.any() else None
+                k = _parting(silent, loud, first)
+                assert k is None, (
+                    f"rule {rule.name!r} declares ignores_reporting but flies differently with "
+                    f"on_detect = report before any drone reports ({where}, from step {k})")
+
+
+def check_radio(name: str, *, drones: Sequence[int] = (1, 6), steps: int = 60, seed: int = 7,
+                ranges: tuple[float, float] = (300.0, 1500.0), **params: Any) -> None:
+    """Call the hooks of the registered radio model ``name`` for a few teams, at two ranges,
+    for ``steps`` steps, and check what they return (module docstring). ``params`` are
+    further flat mission parameters (``sigma=4.0``, ``shadowing="correlated"``)."""
+    model = get_radio(name)
+    for n in drones:
+        m = n + 2
+        flown = {rc: _thresholds(model, n, steps, seed, rc=rc, **params) for rc in ranges}
+        for rc, (nominal, static, later) in flown.items():
+            where = f"radio model {name!r} with {n} drones at r_c = {rc:g} m"
+            assert np.isfinite(nominal) and nominal > 0, (
+                f"{where}: nominal range {nominal!r} is not positive")
+            for k, thr2 in enumerate(later):
+                assert thr2.shape[0] >= m and thr2.shape[1] == m + 2, (
+                    f"{where}: thresholds of shape {thr2.shape} for {m} nodes and 2 padding")
+                links = thr2[:m, :m]
+                assert np.isfinite(links).all(), f"{where}: a threshold is not finite at step {k}"
+                assert np.array_equal(links, links.T), (
+                    f"{where}: thresholds are not symmetric at step {k}")
+                assert not thr2[:m, m:].any(), (
+                    f"{where}: a threshold towards a padding node is not zero at step {k}")
+                assert not static or np.array_equal(links, later[0][:m, :m]), (
+                    f"{where}: declared static, but its thresholds change at step {k}")
+        if model.range_free:
+            (a, (_, _, near)), (b, (_, _, far)) = flown.items()
+            scaled = all(np.allclose(x[:m, :m] / a**2, y[:m, :m] / b**2, rtol=1e-12, atol=0.0)
+                         for x, y in zip(near, far, strict=True))
+            assert scaled, (f"radio model {name!r} declares range_free but its thresholds at "
+                            f"r_c = {a:g} m and {b:g} m are not r_c² times the same fades "
+                            f"({n} drones)")
+
+
+def _thresholds(model: RadioModel, n: int, steps: int, seed: int,
+                **params: Any) -> tuple[float, bool, list[np.ndarray]]:
+    """The model's nominal range, whether it says it is static, and its thresholds after the
+    update of each step (drawn from one random stream of ``seed``), for ``n`` drones and two
+    padding nodes."""
+    mission = Mission.build(radio=model.name, drones=n, **params)
+    home = (np.array([mission.area.bs_xy]),) * n  # no rule: the thresholds need only Params
+    prepared = Prepared.build(mission, Steering(rule=None, routes=home))
+    p, rp = prepared.params, prepared.radio_params
+    thr2 = model.init(p, rp, n + 2, n + 4)
+    rng = np.random.default_rng(seed)
+    later = []
+    for k in range(steps):
+        model.update(thr2, p, rp, k, rng)
+        later.append(thr2.copy())
+    static = model.static if isinstance(model.static, bool) else bool(model.static(p, rp))
+    return float(model.nominal(p, rp)), static, later

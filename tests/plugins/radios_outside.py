@@ -2,7 +2,7 @@
 
 ``CUT`` is the disc with every link to the BS cut: nobody ever reaches the BS. ``HALF`` and
 ``FULL`` are the disc whose nominal range (what ConB predicts with) is its parameter times
-r_c: ``FULL`` is the disc itself.
+r_c: ``FULL`` is the disc itself. ``IMPOSTOR`` is ``CUT`` under the built-in name ``disc``.
 """
 
 from __future__ import annotations
@@ -51,3 +51,4 @@ def factor(value: float, mission: Mission) -> list[float]:
 CUT = RadioModel("cut-bs", cut, steady, scaled, static=True, params=partial(factor, 1.0))
 HALF = RadioModel("half-nominal", disc, steady, scaled, static=True, params=partial(factor, 0.5))
 FULL = RadioModel("full-nominal", disc, steady, scaled, static=True, params=partial(factor, 1.0))
+IMPOSTOR = RadioModel("disc", cut, steady, scaled, static=True, params=partial(factor, 1.0))

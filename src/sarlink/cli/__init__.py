@@ -8,7 +8,7 @@ from sarlink.cli.design import design
 from sarlink.cli.errors import Guarded
 from sarlink.cli.export import export
 from sarlink.cli.plan import plan
-from sarlink.cli.planners import planners
+from sarlink.cli.plugins import plugins
 from sarlink.cli.replay import replay
 from sarlink.cli.reproduce import reproduce
 from sarlink.cli.simulate import simulate
@@ -30,7 +30,8 @@ app.command()(summarize)
 app.command()(reproduce)
 app.command()(replay)
 app.command()(design)
-app.command()(planners)
+app.command()(plugins)
+app.command("planners", hidden=True, help="The same as plugins.")(plugins)
 app.command()(export)
 
 

@@ -32,7 +32,7 @@ from filelock import FileLock
 
 from sarlink.cachedir import cache_root
 from sarlink.engine import kernel as template
-from sarlink.engine.hooks import DistributedRule, RadioModel, python_function
+from sarlink.engine.hooks import DistributedRule, RadioModel, python_function, radio_identity
 from sarlink.engine.rules import none
 
 ENGINE = Path(__file__).resolve().parent
@@ -109,14 +109,20 @@ def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: boo
 
 
 def _sources(rule: DistributedRule | None, radio: RadioModel) -> list[Path]:
-    """Every file the kernel's machine code depends on."""
+    """Every file the kernel's machine code depends on: the engine's, and those of the hooks'
+    modules with the modules beside them in their package (ConCov's hooks call ConB's and
+    CovB's, :mod:`sarlink.planners.rules`)."""
     files = set(ENGINE.rglob("*.py"))
     hooks = [*(rule.hooks().values() if rule else ()), *radio.hooks().values()]
     for fn in hooks:
         if fn is not None:
-            source = inspect.getsourcefile(python_function(fn))
+            py = python_function(fn)
+            source = inspect.getsourcefile(py)
             if source:
-                files.add(Path(source).resolve())
+                path = Path(source).resolve()
+                module = sys.modules.get(py.__module__)
+                in_package = bool(getattr(module, "__package__", ""))
+                files.update(path.parent.glob("*.py") if in_package else (path,))
     return sorted(files)
 
 
@@ -159,12 +165,6 @@ def on_disk(dispatcher: Any) -> bool:
     index = getattr(getattr(getattr(dispatcher, "_cache", None), "_cache_file", None),
                     "_index_path", None)
     return index is not None and os.path.exists(index)
-
-
-def radio_identity(radio: RadioModel) -> tuple[object, ...]:
-    """What a kernel depends on of ``radio``: its hooks (models that share them, the disc and
-    log-normal shadowing, share kernels)."""
-    return (*(python_function(f) for f in radio.hooks().values()), radio.static)
 
 
 def _slug(name: str) -> str:

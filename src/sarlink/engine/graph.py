@@ -27,7 +27,7 @@ _DEBRUIJN_INDEX = np.array(
 @njit(cache=True, inline="always", error_model="numpy")
 def bit(word: np.uint64, a: int) -> bool:
     """Whether node ``a``'s bit is set in ``word``, the bitset word that holds it (for loops
-    that must not hand arrays to helpers, see :func:`sarlink.engine.rules.conb_headings`)."""
+    that must not hand arrays to helpers, see :func:`sarlink.planners.rules.conb.conb_headings`)."""
     return (word >> np.uint64(a & 63)) & _ONE != 0
 
 

@@ -3,7 +3,7 @@
 Both are plain descriptions of Numba-compilable functions. The kernel is compiled once per
 pair of rule and radio model with their functions inlined (:mod:`sarlink.engine.build`), so a
 plug-in runs at the speed of the built-in ones, which are written on these same seams
-(:mod:`sarlink.engine.rules`, :mod:`sarlink.engine.radios`).
+(:mod:`sarlink.planners.rules`, :mod:`sarlink.engine.radios`).
 
 Hook signatures (``p`` is :class:`~sarlink.engine.params.Params`, ``obs`` an
 :class:`~sarlink.engine.observation.Observation`, ``ws`` whatever ``prepare`` returned):
@@ -109,9 +109,10 @@ class RadioModel:
     ``params`` maps a mission to the model's parameter array
     ``rp`` (default: none: the built-in models read the mission's ``channel`` scalars from
     ``p``). ``range_free`` declares that a link exists iff ``d² ≤ r_c² f`` with fades ``f``
-    drawn independently of ``r_c``, as :mod:`sarlink.engine.critical_ranges` redraws them: only
-    the built-in log-normal model's hooks do (a plug-in declaring it is refused), so plug-in
-    models are flown at every range.
+    drawn independently of ``r_c``, as the range scan redraws them: only the built-in
+    log-normal model's hooks do, and the radio registry refuses the declaration from outside
+    sarlink with other hooks (:mod:`sarlink.engine.radios.registry`), so plug-in models are
+    flown at every range.
     """
 
     name: str
@@ -127,17 +128,14 @@ class RadioModel:
             fn = getattr(self, hook)
             if not isinstance(fn, bool):
                 check_hook("radio model", self.name, hook, fn, arity)
-        if self.range_free:
-            from sarlink.engine.radios import lognormal  # the one model whose fades are known
-
-            ours = (lognormal.init, lognormal.update, lognormal.nominal)
-            if tuple(python_function(f) for f in (self.init, self.update, self.nominal)) != tuple(
-                    python_function(f) for f in ours) or self.params is not None:
-                raise ConfigError(f"radio model {self.name!r}: range_free is only for the "
-                                  "built-in log-normal hooks (engine.critical_ranges redraws "
-                                  "their fades); leave it False")
 
     def hooks(self) -> dict[str, Callable[..., Any]]:
         """The hook functions by name (a ``bool`` ``static`` is not one)."""
         return {hook: getattr(self, hook) for hook in _RADIO_HOOKS
                 if not isinstance(getattr(self, hook), bool)}
+
+
+def radio_identity(radio: RadioModel) -> tuple[object, ...]:
+    """What a kernel depends on of ``radio``: its hooks (models that share them, the disc and
+    log-normal shadowing, share kernels)."""
+    return (*(python_function(f) for f in radio.hooks().values()), radio.static)

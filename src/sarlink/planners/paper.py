@@ -1,4 +1,5 @@
-"""The paper's five planners, on the same public seams as any plug-in (Sections 3.1-3.3)."""
+"""The paper's mTSP planners (Section 3.1.1, Algorithm 1), on the same public seams as any
+plug-in; its distributed rules are in :mod:`sarlink.planners.rules`."""
 
 from __future__ import annotations
 
@@ -6,14 +7,14 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from sarlink.engine.rules import CONB, CONCOV, COVB
 from sarlink.planners.base import RoutePlanner, RulePlanner
+from sarlink.planners.registry import register_planner
+from sarlink.planners.rules.conb import CONB
 
 if TYPE_CHECKING:
     from sarlink.config import Mission
 
-__all__ = ["CONB_PLANNER", "CONCOV_PLANNER", "COVB_PLANNER", "MTSP", "MTSP_CONB", "MTSP_PLANNERS",
-           "PAPER"]
+__all__ = ["MTSP", "MTSP_CONB", "MTSP_PLANNERS"]
 
 
 def mtsp_routes(mission: Mission) -> tuple[np.ndarray, ...]:
@@ -38,15 +39,10 @@ def _compact(mission: Mission) -> bool:
     return mission.readings.mtsp_plan == "per-run"
 
 
-MTSP = RoutePlanner("mtsp", "mTSP", mtsp_routes, colour="#1f77b4", marker="o", mtsp=True)
-COVB_PLANNER = RulePlanner("covb", "CovB", COVB, colour="#ff7f0e", marker="s")
-CONB_PLANNER = RulePlanner("conb", "ConB", CONB, colour="#2ca02c", marker="^")
-MTSP_CONB = RulePlanner("mtsp-conb", "mTSP-ConB", CONB, colour="#d62728", marker="D",
-                        routes=mtsp_conb_routes, mtsp=True)
-CONCOV_PLANNER = RulePlanner("concov", "ConCov", CONCOV, colour="#9467bd", marker="v")
-
-PAPER = (MTSP, COVB_PLANNER, CONB_PLANNER, MTSP_CONB, CONCOV_PLANNER)
-"""The paper's planners in the order of its legends."""
+MTSP = register_planner(RoutePlanner("mtsp", "mTSP", mtsp_routes, colour="#1f77b4", marker="o",
+                                     mtsp=True))
+MTSP_CONB = register_planner(RulePlanner("mtsp-conb", "mTSP-ConB", CONB, colour="#d62728",
+                                         marker="D", routes=mtsp_conb_routes, mtsp=True))
 
 MTSP_PLANNERS = (MTSP.name, MTSP_CONB.name)
 """The planners that fly mTSP plans (``[mtsp]`` settings reach them)."""

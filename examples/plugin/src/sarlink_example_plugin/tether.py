@@ -40,5 +40,8 @@ def decide(k: int, p: Params, obs: Observation, ws: np.ndarray, deciding: np.nda
             vx[i], vy[i] = fx / norm, fy / norm
 
 
-TETHER = RulePlanner("tether", "Tether", DistributedRule("tether", decide, near=True),
+TETHER = RulePlanner("tether", "Tether",
+                     DistributedRule("tether", decide, near=True, ignores_reporting=True),
                      colour="#aec7e8", marker="p")
+"""The rule reads the links (``obs.routed``), so it is not ``range_free``; it never reads
+``p.on_detect``, so it declares ``ignores_reporting`` (the contract checks both in flight)."""

@@ -14,6 +14,9 @@ the threshold array, past the rows the links read. With ``sigma = 0``
 nothing is drawn and every threshold is ``r_c²`` for the whole run: the disc, whose links
 never change (a settled team may then jump to the horizon). The two cases are one model, so
 that they compile into one kernel. Planners predict with the shadow-free range r_c.
+
+Both models are registered here, by :func:`~sarlink.engine.radios.register_radio` as a plug-in
+model is; they alone declare ``range_free`` (the range scan redraws exactly these fades).
 """
 
 from __future__ import annotations
@@ -23,7 +26,9 @@ import math
 import numpy as np
 from numba import njit
 
+from sarlink.engine.hooks import RadioModel
 from sarlink.engine.params import SHADOW_CORRELATED, SHADOW_RUN, Params
+from sarlink.engine.radios.registry import register_radio
 
 _LN10 = math.log(10.0)
 
@@ -111,3 +116,11 @@ def static(p: Params, rp: np.ndarray) -> bool:
     """Whether the links never change after step 0: the disc, ``sigma = 0``, or one fade per
     link for the run."""
     return p.sigma == 0.0 or p.shadowing == SHADOW_RUN
+
+
+DISC = register_radio(RadioModel("disc", init, update, nominal, static=static, range_free=True))
+"""Eq. 4: linked within r_c (the model above with ``sigma = 0``: one kernel for both)."""
+SHADOWING = register_radio(RadioModel("shadowing", init, update, nominal, static=static,
+                                      range_free=True))
+"""Eq. 13: log-normal fades per link, changing as ``readings.shadowing`` says (every
+coherence time, once per run, or correlated over the distance flown)."""

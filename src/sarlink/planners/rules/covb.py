@@ -1,4 +1,5 @@
-"""CovB: distributed coverage by mutual repulsion (Section 3.1.2, Eqs. 6-8), as a rule plug-in.
+"""CovB: distributed coverage by mutual repulsion (Section 3.1.2, Eqs. 6-8), shaped like a
+plug-in: its hooks, its rule and its planner, registered by :func:`sarlink.register_planner`.
 
 A deciding drone turns to Eq. 6's resultant: its own heading over r plus a 1/d push from each
 flying drone within the sensing range r. The rule asks for the ``near`` bitsets (pairs within
@@ -12,8 +13,11 @@ from numba import njit
 
 from sarlink.engine.geometry import unit
 from sarlink.engine.graph import add, lowest
+from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import COVB_PRINTED, LANDED, Params
+from sarlink.planners.base import RulePlanner
+from sarlink.planners.registry import register_planner
 
 _ONE = np.uint64(1)
 
@@ -72,3 +76,11 @@ def decide(k: int, p: Params, obs: Observation, flying: np.ndarray, deciding: np
         if deciding[i]:
             vx[i], vy[i] = covb_force(i, px, py, hx, hy, near, flying, p.r,
                                       p.covb_direction == COVB_PRINTED)
+
+
+COVB = DistributedRule("covb", decide, prepare=prepare, near=True,
+                       readings=("covb_direction", "takeoff"), range_free=True,
+                       ignores_reporting=True)
+"""CovB's repulsion (Eqs. 6-8): it reads the pairs within the sensing range, never a link."""
+
+PLANNER = register_planner(RulePlanner("covb", "CovB", COVB, colour="#ff7f0e", marker="s"))

@@ -1,5 +1,6 @@
-"""ConB: distributed planner that keeps drones attached to the BS (Section 3.2, Eqs. 9-11), as a
-rule plug-in.
+"""ConB: the distributed rule that keeps drones attached to the BS (Section 3.2, Eqs. 9-11),
+shaped like a plug-in: its hooks, its rule and its planner, registered by
+:func:`sarlink.register_planner`.
 
 A drone predicts the graph a sensing period ahead (every node keeping its heading, links at the
 radio's nominal range: a drone cannot foresee fading) and, if it would lose its route to the
@@ -20,6 +21,7 @@ from numba import njit
 
 from sarlink.engine.geometry import FAR, TINY, d2, unit
 from sarlink.engine.graph import add, bit, covers, drop, first_nodes, lowest
+from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
@@ -31,6 +33,8 @@ from sarlink.engine.params import (
     SEARCHING,
     Params,
 )
+from sarlink.planners.base import RulePlanner
+from sarlink.planners.registry import register_planner
 
 _ONE = np.uint64(1)
 _ZERO = np.uint64(0)
@@ -292,3 +296,12 @@ def decide(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndar
            vx: np.ndarray, vy: np.ndarray) -> None:
     """ConB's direction for every deciding drone."""
     directions(p, obs, ws, deciding, False, vx, vy)
+
+
+CONB = DistributedRule("conb", decide, prepare=prepare, due=due,
+                       readings=("conb_check", "contacts", "isolated", "conb_fallback", "takeoff"),
+                       ignores_reporting=True)
+"""ConB's attachment to the BS (Eqs. 9-11); mTSP-ConB runs it too
+(:mod:`sarlink.planners.paper`)."""
+
+PLANNER = register_planner(RulePlanner("conb", "ConB", CONB, colour="#2ca02c", marker="^"))

@@ -1,5 +1,6 @@
-"""ConCov: CovB's coverage and ConB's connectivity terms blended by α (Eq. 12, Algorithm 2), as
-a rule plug-in built from the two rules' parts.
+"""ConCov: CovB's coverage and ConB's connectivity terms blended by α (Eq. 12, Algorithm 2),
+shaped like a plug-in built from the two rules' parts: its hooks, its rule and its planner,
+registered by :func:`sarlink.register_planner`.
 
 At ``α = 1`` (``0``) Eq. 12 is exactly the CovB (ConB) direction and is used as such, so those
 trajectories are identical to the pure rules'; only the terms that α weighs are computed.
@@ -13,6 +14,7 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine.geometry import unit
+from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     CONNECTED_NONE,
@@ -21,7 +23,9 @@ from sarlink.engine.params import (
     FALLBACK_CONNECTIVITY,
     Params,
 )
-from sarlink.engine.rules import conb, covb
+from sarlink.planners.base import RulePlanner
+from sarlink.planners.registry import register_planner
+from sarlink.planners.rules import conb, covb
 
 
 class Workspace(NamedTuple):
@@ -82,3 +86,13 @@ def decide(k: int, p: Params, obs: Observation, ws: Workspace, deciding: np.ndar
                 cx, cy = covb.covb_force(i, obs.px, obs.py, obs.hx, obs.hy, obs.near, ws.flying,
                                          p.r, p.covb_direction == COVB_PRINTED)
             vx[i], vy[i] = blend(p, cx, cy, ws.con_x[i], ws.con_y[i], obs.hx[i], obs.hy[i])
+
+
+CONCOV = DistributedRule("concov", decide, prepare=prepare, due=due, near=True,
+                         readings=(*conb.CONB.readings, "covb_direction", "concov_fallback",
+                                   "concov_connected"),
+                         ignores_reporting=True)
+"""ConCov's blend of the two (Eq. 12)."""
+
+PLANNER = register_planner(RulePlanner("concov", "ConCov", CONCOV, colour="#9467bd",
+                                       marker="v"))
