@@ -93,6 +93,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     coherence = round(mission.coherence / dt)
     positions = []
 
+    # mean-area: a loss margin of sigma² ln10 / 10n dB, so that E[area] = pi rc²
+    n_exp, sigma = mission.channel.pathloss_exponent, mission.channel.sigma
+    margin = (sigma**2 * math.log(10) / (10 * n_exp)
+              if readings.shadow_calibration == "mean-area" else 0.0)
+
     def node(j: int, where: list[tuple[float, float]]) -> tuple[float, float]:
         return where[j] if j < n else (bs if j == BS else target)
 
@@ -105,7 +110,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                 if faded and mission.channel.sigma > 0:
                     d = math.hypot(_dist(p, q), h)
                     ok = d == 0 or 10 * mission.channel.pathloss_exponent * math.log10(
-                        d / rc) + shadow[(i, j)] <= 0
+                        d / rc) + shadow[(i, j)] + margin <= 0
                 else:
                     ok = _within(p, q, rc, h)
                 if ok:
@@ -173,6 +178,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         rx = math.cos(heading[i]) + math.cos(theta_ij)
         ry = math.sin(heading[i]) + math.sin(theta_ij)
         if math.hypot(rx, ry) < 1e-9:
+            if readings.conb_fallback == "limit":  # a right angle, to a side drawn
+                return heading[i] + (1 if streams.rule.random() < 0.5 else -1) * math.pi / 2
             return theta_ij if readings.conb_fallback == "contact" else heading[i]
         return math.atan2(ry, rx)
 
@@ -243,9 +250,12 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         if k == steps:
             break
         over = {BS} if readings.reachability == "direct" else set()  # else drones only
-        if any(j in routed and (j < n or j in over) for j in links[TG]):
+        flying = {i for i in range(n) if readings.parked == "relay" or mode[i] != "landed"}
+        if readings.parked == "base" and readings.reachability == "direct":
+            over |= set(range(n))  # a parked drone's link is the BS's own
+        if any(j in routed and (j in flying or j in over) for j in links[TG]):
             reach_time += dt
-        conn_time += dt * sum(1 for i in range(n) if i in routed) / n
+        conn_time += dt * sum(1 for i in flying if i in routed) / n
 
         # decide
         new = list(heading)
@@ -287,6 +297,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                         h = math.atan2(ry, rx)
                     elif readings.concov_fallback == "connectivity":
                         h = con
+                if readings.turns == "jitter" and h != heading[i]:  # flown off by <= 5 degrees
+                    h += math.radians(5.0) * (2 * streams.heading.random() - 1)
             h2 = inward(i, h)
             if h2 != h:
                 last_change[i] = t

@@ -21,7 +21,7 @@ from sarlink import ConfigError, Mission, Scenario, load, prepare, simulate
 from sarlink.cli import app
 from sarlink.config import DEFAULT_READING, READINGS, Experiment, Readings
 from sarlink.engine import Prepared, Steering
-from sarlink.engine.codes import SHADOWING_CODES
+from sarlink.engine.codes import SHADOWING_CODES, Mode
 from sarlink.engine.radios import lognormal
 from sarlink.engine.scenario import draw_scenario
 from sarlink.engine.streams import plan_seed, run_streams
@@ -36,9 +36,10 @@ FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
 def _headings(planner: str, positions: list[tuple[float, float]], angles: list[float],
               steps: int = 6, **choices: object) -> np.ndarray:
-    """The recorded headings of a hand-placed team as unit vectors ``(step, drone, 2)``."""
+    """The recorded headings of a hand-placed team as unit vectors ``(step, drone, 2)``,
+    every commanded turn flown exactly unless ``turns`` says otherwise."""
     mission = Mission.build(planner=planner, drones=len(positions), horizon=float(steps),
-                            **choices)
+                            **{"turns": "exact", **choices})
     scenario = Scenario(target=FAR_TARGET, positions=np.array(positions),
                         headings=np.array(angles))
     trajectory = simulate(mission, scenario=scenario, trajectory=True).trajectory
@@ -278,6 +279,50 @@ def test_conb_s_vanishing_resultant_turns_to_the_contact_or_keeps_the_heading() 
     assert heading[1:, 0] == pytest.approx(np.tile((1.0, 0.0), (len(heading) - 1, 1)))
 
 
+def test_conb_s_vanishing_resultant_in_the_limit_turns_a_right_angle_to_a_drawn_side() -> None:
+    """The same drone under ``limit``: Eq. 9's resultant for a heading α off due east has
+    length 2|sin(α/2)| and points 90° - α/2 from the heading, so as α vanishes it turns a
+    right angle, north or south, by the first draw of the run's rule stream (below 1/2:
+    north); over runs both sides come."""
+    sides = set()
+    for run in range(8):
+        got = _single_turn(run, conb_fallback="limit")
+        north = run_streams(0, run).rule.random() < 0.5
+        assert got == pytest.approx((0.0, 1.0 if north else -1.0))
+        sides.add(north)
+    assert sides == {True, False}
+    alpha = 1e-3  # the equation itself, a little off the limit: 90° - α/2 from the heading
+    rx, ry = math.cos(alpha) + math.cos(math.pi), math.sin(alpha) + math.sin(math.pi)
+    assert math.hypot(rx, ry) == pytest.approx(2 * math.sin(alpha / 2))
+    assert math.atan2(ry, rx) - alpha == pytest.approx(math.pi / 2 - alpha / 2)
+
+
+def _single_turn(run: int, **choices: object) -> tuple[float, float]:
+    """The heading flown after the first decision of a lone ConB drone 996 m east of the BS
+    flying east (the decision comes at once: checked at every increment, its route is lost)."""
+    mission = Mission.build(planner="conb", drones=1, horizon=3.0, rc=1000.0,
+                            conb_check="continuous", **{"turns": "exact", **choices})
+    scenario = Scenario(target=FAR_TARGET, positions=np.array([(2996.0, 2000.0)]),
+                        headings=np.array([0.0]))
+    trajectory = simulate(mission, scenario=scenario, seed=0, run=run,
+                          trajectory=True).trajectory
+    assert trajectory is not None
+    return (math.cos(trajectory.headings[1, 0]), math.sin(trajectory.headings[1, 0]))
+
+
+def test_a_commanded_turn_is_flown_exactly_or_off_by_the_run_s_heading_error() -> None:
+    """The lone ConB drone turns back to the BS (``contact``): with ``turns = exact`` it flies
+    due west; with ``jitter`` due west rotated by (2u - 1) · 5°, u the first number of the
+    run's heading stream; a drone that keeps its heading (a CovB drone alone) draws nothing."""
+    for run in range(4):
+        assert _single_turn(run, conb_fallback="contact") == pytest.approx((-1.0, 0.0))
+        e = math.radians(5.0) * (2 * run_streams(0, run).heading.random() - 1)
+        got = _single_turn(run, conb_fallback="contact", turns="jitter")
+        assert got == pytest.approx((math.cos(math.pi + e), math.sin(math.pi + e)), abs=1e-12)
+    alone = _headings("covb", [(2200.0, 2000.0)], [math.pi / 2], turns="jitter")
+    assert alone[1:, 0] == pytest.approx(np.tile((0.0, 1.0), (len(alone) - 1, 1)))
+
+
 def test_eq_8_pushes_as_the_text_says_or_pulls_as_printed() -> None:
     """Two CovB drones 200 m apart east-west fly north (r = 500 m). At the update (step 2)
     drone 0's Eq. 6 is its heading / r plus (1/d) θ̂: θ from drone 1 to drone 0 (``push``,
@@ -311,6 +356,31 @@ def test_reachability_counts_a_direct_target_bs_link_or_only_routes_over_drones(
     assert _reach("direct", between) == _reach("multihop", between) == 10.0
 
 
+def _parked(parked: str, reachability: str = "multihop") -> tuple[float, float]:
+    """Seconds of 10 the target at (2600, 2000), 600 m from the BS, was reachable, and the
+    mean share of drones connected, for one CovB drone 10 m north of the BS whose 3 s of
+    flight send it home at once: it lands at the BS at step 2 and stays there."""
+    mission = Mission.build(planner="covb", drones=1, horizon=10.0, checkpoint=10.0,
+                            flight_time=3.0, reachability=reachability, parked=parked)
+    scenario = Scenario(target=(2600.0, 2000.0), positions=np.array([(2000.0, 2010.0)]),
+                        headings=np.array([math.pi / 2]))
+    result = simulate(mission, scenario=scenario, trajectory=True)
+    assert result.trajectory is not None
+    assert list(result.trajectory.mode[:4, 0]) == [Mode.RETURNING, Mode.RETURNING, Mode.LANDED,
+                                                   Mode.LANDED]
+    return float(result.reach_cum[-1]), result.connected_fraction()
+
+
+def test_a_parked_drone_relays_like_any_other_or_is_part_of_the_bs() -> None:
+    """Landed at step 2, the drone is 600 m from the target (r_c = 1000 m). ``relay``: it
+    keeps the target reachable over the drones and counts as connected all 10 s. ``base``:
+    it is the BS, so only its 2 s in the air count for multihop reachability and for the
+    connected share, while a direct target-BS link counts all 10 s as it would anyway."""
+    assert _parked("relay") == (10.0, 1.0)
+    assert _parked("base") == (2.0, 0.2)
+    assert _parked("base", "direct") == (10.0, 0.2)
+
+
 def test_shadowing_per_period_per_run_or_correlated_with_the_distance_flown() -> None:
     """The fades of a 3-drone team (5 nodes) at r_c = 1000 m, sigma = 3 dB, step by step:
     ``period`` redraws every coherence time (2 steps), ``run`` never after step 0,
@@ -341,6 +411,23 @@ def test_shadowing_per_period_per_run_or_correlated_with_the_distance_flown() ->
         z = rho * z + np.sqrt(1 - rho**2) * normals[k]
         np.testing.assert_allclose(correlated[k], z, atol=1e-9)
     assert correlated[-1][ends == 0] == pytest.approx(normals[0][ends == 0])
+
+
+def test_r_c_is_the_median_link_range_or_the_one_of_the_mean_link_area() -> None:
+    """Eq. 13's squared link range is r_c² exp(-S ln10 / 5n), log-normal: its mean is
+    exp(s²/2) r_c² with s = sigma ln10 / 5n (1.37 at sigma = 3 dB, n = 1.75) when r_c is the
+    median range; ``mean-area`` makes the mean link area the disc's, pi r_c²."""
+    m = 200
+    s = 3.0 * math.log(10) / (5 * 1.75)
+    for calibration, mean in (("median", math.exp(s * s / 2)), ("mean-area", 1.0)):
+        p = params(rc=1000.0, sigma=3.0, shadowing=int(SHADOWING_CODES["run"]),
+                   fade_bias=lognormal.fade_bias(3.0, 1.75, calibration))
+        thr2 = lognormal.init(p, np.zeros(0), m, padded(m))
+        lognormal.update(thr2, p, np.zeros(0), 0, np.random.default_rng(5))
+        area = thr2[:m, :m][np.triu_indices(m, 1)] / 1e6
+        assert area.mean() == pytest.approx(mean, abs=4 * area.std() / math.sqrt(area.size))
+        assert np.median(area) == pytest.approx(math.exp(-s * s / 2) ** (calibration != "median"),
+                                                rel=0.03)
 
 
 def test_correlated_fades_are_stationary_normal_and_the_same_at_every_range() -> None:

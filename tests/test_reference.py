@@ -39,6 +39,13 @@ CASES = {
     "conb-check-period": {"planner": "conb", "conb_check": "period"},
     "concov-fallback-heading": {"planner": "concov", "concov_fallback": "heading",
                                 "takeoff": "even"},  # radial: resultants cancel
+    "conb-sarlink-3": {"planner": "conb", "reading": "sarlink-3"},
+    "conb-limit-exact": {"planner": "conb", "turns": "exact", "takeoff": "even"},
+    "conb-landing-relay": {"planner": "conb", "flight_time": 700.0, "parked": "relay"},
+    "covb-landing-direct": {"planner": "covb", "flight_time": 700.0,
+                            "reachability": "direct"},
+    "concov-mean-area-shadowing": {"planner": "concov", "sigma": 3.0,
+                                   "shadow_calibration": "mean-area"},
 }
 
 
@@ -66,3 +73,7 @@ def test_engine_agrees_with_the_reference(case: str) -> None:
     reach_slow = np.array([s.t_reachable for s in slow])
     se = math.sqrt((reach_fast.var() + reach_slow.var()) / RUNS)
     assert abs(reach_fast.mean() - reach_slow.mean()) <= 3 * se + 1.0
+    conn_fast = np.array([f.connected_fraction() for f in fast])
+    conn_slow = np.array([s.connected_time / 1000.0 for s in slow])
+    se = math.sqrt((conn_fast.var() + conn_slow.var()) / RUNS)
+    assert abs(conn_fast.mean() - conn_slow.mean()) <= 3 * se + 1e-3

@@ -173,12 +173,18 @@ class Readings(Checked):
         "jitter",
         description="the distributed drones' take-off headings: even: exactly evenly spaced, "
         "2πk/N plus one random offset per run; random: independent uniform headings; "
-        "jitter: evenly spaced, each off by a uniform error of at most TAKEOFF_JITTER",
+        "jitter: evenly spaced, each off by a uniform error of at most HEADING_ERROR (5°)",
     )
-    conb_fallback: Literal["contact", "heading"] = Field(
-        "contact",
+    conb_fallback: Literal["contact", "heading", "limit"] = Field(
+        "limit",
         description="ConB's heading when Eq. 9's two unit terms cancel (a drone flying straight "
-        "away from its contact): contact: turn to θ_ij (a reversal); heading: keep it",
+        "away from its contact): contact: turn to θ_ij (a reversal); heading: keep it; limit: "
+        "Eq. 9's limit as the heading's error vanishes, a right angle to a side drawn at random",
+    )
+    turns: Literal["exact", "jitter"] = Field(
+        "jitter",
+        description="how a distributed drone flies a commanded change of heading: exact; or "
+        "jitter: off by a uniform error of at most HEADING_ERROR (5°), drawn at each change",
     )
     covb_direction: Literal["push", "printed"] = Field(
         "push",
@@ -191,6 +197,17 @@ class Readings(Checked):
         "every coherence time; run: one fade per link for the whole run; correlated: each "
         "link's fade decorrelates with the distance its ends fly (Gudmundson, "
         "channel.decorrelation)",
+    )
+    shadow_calibration: Literal["median", "mean-area"] = Field(
+        "median",
+        description="which range of a log-normal link r_c is (sigma > 0): median: the path "
+        "loss alone reaches r_c (Eq. 13 with S = 0); mean-area: the mean link area is the "
+        "disc's, pi r_c²",
+    )
+    parked: Literal["relay", "base"] = Field(
+        "base",
+        description="a drone landed at the BS: relay: a drone like any other, relaying and "
+        "counted connected; base: part of the BS, its links the BS's, not a connected drone",
     )
     reachability: Literal["direct", "multihop"] = Field(
         "multihop",

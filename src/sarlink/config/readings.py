@@ -3,7 +3,7 @@
 A reading fixes every field of :class:`~sarlink.config.mission.Readings` (how the model reads
 what the paper leaves open) and Fig. 3's target duration, which the paper does not state.
 Which choices reach which rule, each rule says itself (``DistributedRule.readings``). The
-default reading is what ``Mission()`` gives: ``sarlink-3``, each of whose choices follows the
+default reading is what ``Mission()`` gives: ``sarlink-4``, each of whose choices follows the
 paper's words and what a drone can do (docs/model.md), not how many claims hold under it.
 """
 
@@ -17,7 +17,8 @@ __all__ = ["DEFAULT_READING", "EARLIER_CHOICES", "READINGS", "Reading", "get_rea
 
 EARLIER_CHOICES = {"takeoff": "even", "conb_fallback": "contact", "covb_direction": "push",
           "shadowing": "period", "reachability": "direct", "mtsp_plan": "shared",
-          "mtsp_prediction": "heading"}
+          "mtsp_prediction": "heading", "turns": "exact", "parked": "relay",
+          "shadow_calibration": "median"}
 """The choices sarlink made before they were named: the older presets keep them."""
 
 @dataclass(frozen=True)
@@ -81,13 +82,33 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
          "concov_fallback": "connectivity", "concov_connected": "heading", "takeoff": "jitter",
          "conb_fallback": "contact", "covb_direction": "push", "shadowing": "correlated",
-         "reachability": "multihop", "mtsp_plan": "per-run", "mtsp_prediction": "paths"},
+         "reachability": "multihop", "mtsp_plan": "per-run", "mtsp_prediction": "paths",
+         "turns": "exact", "parked": "relay", "shadow_calibration": "median"},
+        td_fig3=2000.0,
+    ),
+    Reading(
+        "sarlink-4",
+        "sarlink-3, with what a drone does after take-off too: every commanded turn flown "
+        "with a drone's few degrees of heading error (Section 2: the drones 'rely on GPS', "
+        "whose 'update rate and accuracy' set 'the sensing period and direction change "
+        "times'); where Eq. 9 vanishes ConB turns a right angle, to a side drawn, the "
+        "equation's own limit as the heading's error vanishes (a turn to θ_ij is the limit "
+        "of no heading near it); a drone landed at the BS is part of the BS, not a relay "
+        "and not a connected drone (Section 4.2: reachability is the time 'the target can "
+        "be connected to the BS over a multihop link'); r_c the range of the path loss "
+        "alone under shadowing (Section 4.3: 'we change the channel to log-normal "
+        "shadowing', Eq. 13 adds S to the same path loss); Fig. 3 at t_d = 2000 s",
+        {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
+         "concov_fallback": "connectivity", "concov_connected": "heading", "takeoff": "jitter",
+         "conb_fallback": "limit", "covb_direction": "push", "shadowing": "correlated",
+         "reachability": "multihop", "mtsp_plan": "per-run", "mtsp_prediction": "paths",
+         "turns": "jitter", "parked": "base", "shadow_calibration": "median"},
         td_fig3=2000.0,
     ),
 )}
 """The presets by name."""
 
-DEFAULT_READING = "sarlink-3"
+DEFAULT_READING = "sarlink-4"
 """The reading ``Mission()`` gives and ``sarlink reproduce`` uses unless told otherwise."""
 
 

@@ -119,9 +119,11 @@ class ConbFallback(IntEnum):
 
     CONTACT = 0  # turn to θ_ij
     HEADING = 1  # keep the heading
+    LIMIT = 2  # Eq. 9's limit as the heading's error vanishes: a right angle, to a drawn side
 
 
-CONB_FALLBACK_CODES = {"contact": ConbFallback.CONTACT, "heading": ConbFallback.HEADING}
+CONB_FALLBACK_CODES = {"contact": ConbFallback.CONTACT, "heading": ConbFallback.HEADING,
+                       "limit": ConbFallback.LIMIT}
 
 
 class CovbDirection(IntEnum):
@@ -154,6 +156,37 @@ class Reachability(IntEnum):
 
 
 REACHABILITY_CODES = {"direct": Reachability.DIRECT, "multihop": Reachability.MULTIHOP}
+
+
+class Parked(IntEnum):
+    """What a drone landed at the BS is to the network."""
+
+    RELAY = 0  # a drone like any other: it relays and counts as connected
+    BASE = 1  # part of the BS: its links are the BS's, and it is not a connected drone
+
+
+PARKED_CODES = {"relay": Parked.RELAY, "base": Parked.BASE}
+
+
+class Turns(IntEnum):
+    """How exactly a drone flies a heading it is commanded to change to."""
+
+    EXACT = 0
+    JITTER = 1  # off by a small uniform error, drawn at each change
+
+
+TURNS_CODES = {"exact": Turns.EXACT, "jitter": Turns.JITTER}
+
+
+class ShadowCalibration(IntEnum):
+    """Which range of a log-normal link r_c is."""
+
+    MEDIAN = 0  # the path loss alone reaches r_c (Eq. 13 with S = 0): half the fades do
+    MEAN_AREA = 1  # the mean link area is the disc's, pi r_c^2
+
+
+SHADOW_CALIBRATION_CODES = {"median": ShadowCalibration.MEDIAN,
+                            "mean-area": ShadowCalibration.MEAN_AREA}
 
 
 class Prediction(IntEnum):

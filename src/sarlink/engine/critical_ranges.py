@@ -50,7 +50,7 @@ from numba import njit
 from sarlink.engine import graph, records, sensing
 from sarlink.engine.codes import Reachability
 from sarlink.engine.geometry import FAR, PAD, d2
-from sarlink.engine.params import STOP_DETECTED, STOP_NOTIFIED, Params
+from sarlink.engine.params import LANDED, PARKED_BASE, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.radios import lognormal
 
 _DIRECT = int(Reachability.DIRECT)
@@ -359,6 +359,9 @@ class Scan(NamedTuple):
     d_conn: np.ndarray
     """Per range: what it adds to ``acc_conn`` (``dt`` times the fraction of drones with a
     route to the BS), both as the kernel computes them."""
+    parked: np.ndarray
+    """``(1,)``: how many drones were landed at the last step (with ``readings.parked =
+    base`` a landing changes the records at every range, as it may change no link)."""
 
 
 @njit(cache=True, error_model="numpy")
@@ -385,7 +388,7 @@ def new_scan(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Scan:
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
                    np.zeros(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_), notified,
                    reach_cum, conn_cum, acc_reach, acc_conn, going, np.zeros(nr),
-                   np.zeros(nr))
+                   np.zeros(nr), np.zeros(1, dtype=np.int64))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -487,8 +490,8 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
 @njit(cache=True, inline="always", error_model="numpy")
 def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
-              sensed: np.ndarray, spread: np.ndarray, stack: np.ndarray, sc: Scan,
-              near: np.ndarray, with_near: bool) -> None:
+              sensed: np.ndarray, mode: np.ndarray, spread: np.ndarray, stack: np.ndarray,
+              sc: Scan, near: np.ndarray, with_near: bool) -> None:
     """Step ``k`` of a range-free flight at every range: the checkpoints due (``ci``: the
     first of them), the graph (the kernel's link pass at every range, which also gives the
     pairs within ``r`` in ``near`` when a rule reads them, ``with_near``), the BS's component,
@@ -509,13 +512,20 @@ def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
         new_knower |= sensed[i] and not sc.counted[i]
         sc.counted[i] = sensed[i]
     toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, sc, near, p.r * p.r, with_near)
+    parked = 0
+    for i in range(n if p.parked == PARKED_BASE else 0):
+        parked += mode[i] == LANDED
+    if parked != sc.parked[0]:  # a drone became part of the BS: every range's records move
+        sc.parked[0] = parked
+        sc.moved[:] = True
+        toggled = True
     notified_now = False
     # a step that changed no graph and no knower moves no component and floods nothing
     for j in range(sc.thr.shape[0] if toggled or new_knower else 0):
         if sc.moved[j]:
             graph.bs_component(sc.adj[j], n, sc.routed[j], stack)
-            reachable, connected = graph.reachability(sc.adj[j], sc.routed[j], n,
-                                                      p.reachability)
+            reachable, connected = graph.reachability(sc.adj[j], sc.routed[j], mode,
+                                                      p.reachability, p.parked)
             sc.d_reach[j] = p.dt if reachable else 0.0
             sc.d_conn[j] = p.dt * connected / n
         if detected and sc.notified[j] < 0 and (sc.changed[j] or new_knower):

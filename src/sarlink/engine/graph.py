@@ -11,10 +11,13 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from sarlink.engine.codes import Reachability
+from sarlink.engine.codes import Mode, Parked, Reachability
 from sarlink.engine.geometry import d2
 
 _DIRECT = int(Reachability.DIRECT)
+_RELAY = int(Parked.RELAY)
+_BASE = int(Parked.BASE)
+_LANDED = int(Mode.LANDED)
 _ZERO = np.uint64(0)
 _ONE = np.uint64(1)
 _DEBRUIJN = np.uint64(0x03F79D71B4CB0A89)
@@ -188,18 +191,25 @@ def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.nda
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def reachability(adj: np.ndarray, routed: np.ndarray, n: int,
-                 how: int = _DIRECT) -> tuple[bool, int]:
+def reachability(adj: np.ndarray, routed: np.ndarray, mode: np.ndarray, how: int = _DIRECT,
+                 parked: int = _RELAY) -> tuple[bool, int]:
     """Whether the target has a route to the BS, and how many drones have one.
 
     ``how`` is ``readings.reachability``'s code (:class:`~sarlink.engine.codes.Reachability`):
-    whether a direct target-BS link counts, or only a route over the drones.
+    whether a direct target-BS link counts, or only a route over the drones. ``parked`` is
+    ``readings.parked``'s (:class:`~sarlink.engine.codes.Parked`): with ``base`` a drone
+    landed at the BS is part of it, so its link to the target is the BS's own (a direct
+    link) and it is not a connected drone.
     """
+    n = mode.shape[0]
     tg = n + 1
     reachable = how == _DIRECT and linked(adj, tg, n)
     connected = 0
     for i in range(n):
         if has(routed, i):
+            if parked == _BASE and mode[i] == _LANDED:
+                reachable |= how == _DIRECT and linked(adj, tg, i)
+                continue
             connected += 1
             if linked(adj, tg, i):
                 reachable = True

@@ -57,8 +57,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     pos0: np.ndarray, heading0: np.ndarray, wp: np.ndarray, wp_start: np.ndarray,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-                    rng_rule: np.random.Generator, edges: np.ndarray, nav: np.ndarray,
-                    far: float, r2s: np.ndarray) -> RunRecord:
+                    rng_rule: np.random.Generator, rng_heading: np.random.Generator,
+                    edges: np.ndarray, nav: np.ndarray, far: float, r2s: np.ndarray
+                    ) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
@@ -139,12 +140,13 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         reachable, connected = False, 0
         if SCANS_RANGES and scanning:  # compiled only where the team may be range-free (build)
             critical_ranges.scan_step(k, due, p, cp_steps, px, py, pz, thr2, t_det >= 0.0,
-                                      knows, spread, stack, sc, near, push)
+                                      knows, mode, spread, stack, sc, near, push)
         if not (scanning or p.trace):  # a traced flight is scanned afterwards (critical_ranges)
             graph.bs_component(adj, n, routed, stack)
             if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
                 t_not = t
-            reachable, connected = graph.reachability(adj, routed, n, p.reachability)
+            reachable, connected = graph.reachability(adj, routed, mode, p.reachability,
+                                                      p.parked)
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
@@ -180,6 +182,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if any_deciding:
             # ---- stepping form: the decisions come from outside here (sarlink.env) ----
             rule_decide(k, p, obs, ws, deciding, nhx, nhy)
+            if p.turn_error > 0.0:  # the heading a drone flies is not the one commanded
+                motion.turn_errors(p, deciding, hx, hy, nhx, nhy, rng_heading)
         if polygon:  # the boundary rule on the polygon, and the ways round its holes
             area.polygon_rules(k, homing, p, px, py, nhx, nhy, mode, on_route, last_change,
                                edges, nav, rejoin, leave_x, leave_y, goal_x, goal_y, rng_turn)

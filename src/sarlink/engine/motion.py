@@ -103,6 +103,20 @@ def schedule(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx
     return any_deciding
 
 
+@njit(cache=True, error_model="numpy")
+def turn_errors(p: Params, deciding: np.ndarray, hx: np.ndarray, hy: np.ndarray,
+                nhx: np.ndarray, nhy: np.ndarray, rng: np.random.Generator) -> None:
+    """Fly every commanded change of heading off by a uniform error of at most
+    ``p.turn_error`` (``readings.turns = jitter``): a drone's compass and heading control hold
+    a heading to a few degrees, not to the last bit. Only a drone that decides and is told a
+    new heading draws, in drone order, so a kept heading is flown as it was."""
+    for i in range(nhx.shape[0]):
+        if deciding[i] and (nhx[i] != hx[i] or nhy[i] != hy[i]):
+            e = p.turn_error * (2.0 * rng.random() - 1.0)
+            c, s = math.cos(e), math.sin(e)
+            nhx[i], nhy[i] = c * nhx[i] - s * nhy[i], s * nhx[i] + c * nhy[i]
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def boundary_turn(
     x: float, y: float, hx: float, hy: float, step: float, size: float, rng: np.random.Generator

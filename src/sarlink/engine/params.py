@@ -15,6 +15,7 @@ from sarlink.engine.codes import (
     Look,
     Mode,
     OnDetect,
+    Parked,
     Prediction,
     Reachability,
     Reporters,
@@ -37,11 +38,13 @@ ISOLATED_HOME = int(Isolated.HOME)
 FALLBACK_CONNECTIVITY = int(Fallback.CONNECTIVITY)
 CONNECTED_NONE = int(Connected.NONE)
 CONB_KEEP_HEADING = int(ConbFallback.HEADING)
+CONB_LIMIT = int(ConbFallback.LIMIT)
 COVB_PRINTED = int(CovbDirection.PRINTED)
 SHADOW_RUN = int(Shadowing.RUN)
 SHADOW_CORRELATED = int(Shadowing.CORRELATED)
 REACH_MULTIHOP = int(Reachability.MULTIHOP)
 PREDICT_PATHS = int(Prediction.PATHS)
+PARKED_BASE = int(Parked.BASE)
 
 
 class Params(NamedTuple):
@@ -84,3 +87,9 @@ class Params(NamedTuple):
     shadowing: int
     reachability: int
     mtsp_prediction: int
+    parked: int
+    turn_error: float
+    """The largest error of a commanded change of heading, rad (``readings.turns``)."""
+    fade_bias: float
+    """Added to every fade's log-range factor: 0 puts the median link range at r_c,
+    ``-(sigma ln10 / 5n)² / 2`` the mean link area at the disc's (``shadow_calibration``)."""

@@ -24,6 +24,7 @@ from sarlink.engine.codes import (
     ISOLATED_CODES,
     LOOK_CODES,
     ON_DETECT_CODES,
+    PARKED_CODES,
     PREDICTION_CODES,
     REACHABILITY_CODES,
     REPORTERS_CODES,
@@ -34,8 +35,9 @@ from sarlink.engine.critical_ranges import Critical, critical
 from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
+from sarlink.engine.radios.lognormal import fade_bias
 from sarlink.engine.records import AtRanges, RunRecord
-from sarlink.engine.scenario import Scenario, draw_scenario, takeoff_headings
+from sarlink.engine.scenario import HEADING_ERROR, Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
 from sarlink.engine.streams import Streams, copied, run_streams
 from sarlink.result import RunResult, Trajectory
@@ -105,6 +107,10 @@ class Prepared:
             shadowing=int(SHADOWING_CODES[r.shadowing]),
             reachability=int(REACHABILITY_CODES[r.reachability]),
             mtsp_prediction=int(PREDICTION_CODES[r.mtsp_prediction]),
+            parked=int(PARKED_CODES[r.parked]),
+            turn_error=HEADING_ERROR if r.turns == "jitter" else 0.0,
+            fade_bias=fade_bias(mission.channel.sigma, mission.channel.pathloss_exponent,
+                                r.shadow_calibration),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
@@ -137,6 +143,7 @@ class Prepared:
                 takeoff_headings(scenario, self.distributed, self.mission.readings.takeoff,
                                  streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, streams.rule,
+                streams.heading,
                 self.edges, self.nav, self.far, np.array([rc * rc for rc in scan_at]))
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,

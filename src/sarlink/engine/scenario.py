@@ -64,16 +64,17 @@ def draw_scenario(mission: Mission, rng: np.random.Generator) -> Scenario:
     return Scenario(target=(x, y), heading_offset=rng.random() * 2 * math.pi)
 
 
-TAKEOFF_JITTER = math.radians(5.0)
-"""Largest heading error of a drone at take-off (``readings.takeoff = jitter``): a few degrees,
-what a drone's compass and heading control hold (docs/model.md, Readings)."""
+HEADING_ERROR = math.radians(5.0)
+"""Largest heading error of a drone, at take-off (``readings.takeoff = jitter``) and at each
+commanded change (``readings.turns = jitter``): a few degrees, what a drone's compass and
+heading control hold (docs/model.md, Readings)."""
 
 
 def takeoff_headings(scenario: Scenario, distributed: np.ndarray, takeoff: str = "even",
                      rng: np.random.Generator | None = None) -> np.ndarray:
     """Take-off headings of the distributed drones, by ``readings.takeoff``: evenly spaced and
     rotated by the scenario's offset (``even``), each then off by a uniform error of at most
-    :data:`TAKEOFF_JITTER` (``jitter``), or independent and uniform (``random``). The random
+    :data:`HEADING_ERROR` (``jitter``), or independent and uniform (``random``). The random
     draws come from ``rng`` (the run's take-off stream), one per drone, so a team's draws
     depend on neither its rule nor which drones fly routes."""
     if scenario.headings is not None:
@@ -92,5 +93,5 @@ def takeoff_headings(scenario: Scenario, distributed: np.ndarray, takeoff: str =
         headings[distributed] = 2 * math.pi * u
     else:
         headings[distributed] = (2 * math.pi * np.arange(k) / k + scenario.heading_offset
-                                 + TAKEOFF_JITTER * (2 * u - 1))
+                                 + HEADING_ERROR * (2 * u - 1))
     return headings

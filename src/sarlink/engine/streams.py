@@ -68,6 +68,11 @@ class Streams:
         """A distributed rule's own draws (``Observation.rng``)."""
         return self._stream(6)
 
+    @property
+    def heading(self) -> np.random.Generator:
+        """The errors of commanded changes of heading (``readings.turns = jitter``)."""
+        return self._stream(7)
+
 
 def run_streams(seed: int, run: int) -> Streams:
     """The independent generators of run ``run`` of an experiment seeded with ``seed``."""

@@ -41,16 +41,19 @@ _NEUTRAL = READINGS["sarlink-1"].choices
 
 def reaches(planner: Planner, experiment: Experiment) -> list[str]:
     """The choices of :class:`~sarlink.config.mission.Readings` that can change ``planner``'s
-    runs in ``experiment``: its rule's, target reachability (every planner's), the mTSP plan's
-    (a planner that flies one), the prediction of the mTSP drones (a hybrid that flies one) and,
-    where a point has shadowing, how the fades change."""
+    runs in ``experiment``: its rule's, the errors of commanded turns (a planner with a rule),
+    target reachability and parked drones (every planner's), the mTSP plan's (a planner that
+    flies one), the prediction of the mTSP drones (a hybrid that flies one) and, where a point
+    has shadowing, how the fades change and which range r_c is."""
     rule = planner.rule.readings if planner.rule is not None else ()
     mtsp = bool(getattr(planner, "mtsp", False))
     sigmas = [experiment.mission.channel.sigma, *experiment.grid.get("sigma", [])]
-    wanted = {*rule, "reachability",
+    wanted = {*rule, "reachability", "parked",
+              *(["turns"] if planner.rule is not None else []),
               *(["mtsp_plan"] if mtsp else []),
               *(["mtsp_prediction"] if mtsp and planner.rule is not None else []),
-              *(["shadowing"] if any(float(v) > 0 for v in sigmas) else [])}
+              *(["shadowing", "shadow_calibration"] if any(float(v) > 0 for v in sigmas)
+                else [])}
     return [c for c in _NEUTRAL if c in wanted]
 
 

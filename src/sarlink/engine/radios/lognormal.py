@@ -2,7 +2,9 @@
 ``sigma = 0``.
 
 A link exists where the path loss plus a fade ``S`` stays within the budget of the range r_c,
-``10 n log10(d / r_c) + S <= 0``, ``S = sigma * z`` with ``z`` standard normal per link,
+``10 n log10(d / r_c) + S <= 0``, ``S = sigma * z`` with ``z`` standard normal per link
+(``readings.shadow_calibration = mean-area`` shifts every ``S`` so that the mean link area is
+the disc's: :func:`fade_bias`),
 drawn independently of r_c, so the draws of a run are the same at every range. How ``z``
 changes is ``readings.shadowing``: drawn anew each coherence time (``period``;
 ``channel.coherence``, default t_s), once per run (``run``), or every step as a Gauss-Markov
@@ -33,6 +35,20 @@ from sarlink.engine.radios.registry import register_radio
 _LN10 = math.log(10.0)
 
 
+def fade_bias(sigma: float, pathloss_exponent: float, calibration: str) -> float:
+    """What to add to every fade's exponent ``-S ln10 / 5n`` for ``readings.shadow_calibration``.
+
+    ``median``: nothing, r_c is the range the path loss alone reaches, so half of the fades
+    reach beyond it. ``mean-area``: ``-(sigma ln10 / 5n)² / 2``, as the squared range's
+    factor ``exp(-S ln10 / 5n)`` is log-normal with that half-variance: the mean link area is
+    then ``pi r_c²``, the disc's (Section 2: "a multihop link to the BS *on average*").
+    """
+    if calibration == "median":
+        return 0.0
+    spread = sigma * _LN10 / (5.0 * pathloss_exponent)
+    return -0.5 * spread * spread
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def disc_ranges(rc: float, m: int, mp: int) -> np.ndarray:
     """Squared link ranges ``rc²`` among the ``m`` nodes; none to the padding."""
@@ -53,7 +69,7 @@ def draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> Non
     for a in range(m):
         for b in range(a + 1, m):
             s = p.sigma * rng.standard_normal()
-            v = rc2 * math.exp(scale * s)
+            v = rc2 * math.exp(scale * s + p.fade_bias)
             thr2[a, b] = v
             thr2[b, a] = v
 
@@ -89,7 +105,7 @@ def drift_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator, first
                 rho = math.exp(-ends * moved)
                 z = rho * thr2[m + a, b] + math.sqrt(1.0 - rho * rho) * e
             thr2[m + a, b] = z
-            v = rc2 * math.exp(scale * p.sigma * z)
+            v = rc2 * math.exp(scale * p.sigma * z + p.fade_bias)
             thr2[a, b] = v
             thr2[b, a] = v
 

@@ -26,6 +26,7 @@ from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
     ALL_CONTACTS,
     CONB_KEEP_HEADING,
+    CONB_LIMIT,
     CONTINUOUS,
     ISOLATED_HOME,
     LANDED,
@@ -185,7 +186,7 @@ def check_continuously(k: int, p: Params, obs: Observation, ws: Workspace, decid
 def conb_headings(
     deciding: np.ndarray, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
     mode: np.ndarray, adj: np.ndarray, routed_next: np.ndarray, p: Params, rc: float,
-    no_term: bool, vx: np.ndarray, vy: np.ndarray,
+    no_term: bool, vx: np.ndarray, vy: np.ndarray, rng: np.random.Generator,
 ) -> None:
     """Unit direction of Eq. 9 (Algorithm 1, part 2) of every deciding drone, into ``vx, vy``.
 
@@ -193,9 +194,15 @@ def conb_headings(
     the term is zero instead with ``no_term``: ConCov's ``concov_connected = none``); else it
     steers towards where the neighbour with the longest contact (among those predicted to keep
     a route to the BS, if any, with ``contacts = routed``) would be when the contact ends (if
-    the two unit terms cancel, it turns to that point or, with ``conb_fallback = heading``,
-    keeps its heading); a drone without neighbours keeps its heading or, with
-    ``isolated = home``, turns to the BS.
+    the two unit terms cancel, it turns to that point, or with ``conb_fallback = heading``
+    keeps its heading, or with ``limit`` turns a right angle to a side drawn from ``rng``);
+    a drone without neighbours keeps its heading or, with ``isolated = home``, turns to the
+    BS.
+
+    The limit: for a heading ``α`` off the direction away from the contact, Eq. 9's resultant
+    ``θ_i + θ_ij`` has length ``2|sin(α/2)|`` and points ``90° - α/2`` from the heading, to
+    the side of ``α``; as ``α`` vanishes it is a right angle, to the side the drone's error
+    would have chosen, which nothing in the equations fixes: a fair draw.
     A neighbour's route "without i" is its route in the predicted graph: ``i`` is not in the
     BS's predicted component here, so removing it changes nothing.
     """
@@ -259,6 +266,9 @@ def conb_headings(
             ux, uy = unit(rx, ry, ux, uy)
         elif p.conb_fallback == CONB_KEEP_HEADING:  # flying straight away from the contact
             ux, uy = hx[i], hy[i]
+        elif p.conb_fallback == CONB_LIMIT:
+            side = 1.0 if rng.random() < 0.5 else -1.0
+            ux, uy = -side * hy[i], side * hx[i]
         vx[i], vy[i] = ux, uy
 
 
@@ -288,7 +298,7 @@ def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
                        ws.qy, ws.disc2, ws.routed_next, ws.expanded, obs.on_route, obs.wp,
                        obs.wp_next, obs.wp_end, ws.routed_step)
     conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
-                  p, obs.rc, no_term, vx, vy)
+                  p, obs.rc, no_term, vx, vy, obs.rng)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
