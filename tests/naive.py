@@ -297,7 +297,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                         h = math.atan2(ry, rx)
                     elif readings.concov_fallback == "connectivity":
                         h = con
-                if readings.turns == "jitter" and h != heading[i]:  # flown off by <= 5 degrees
+                turn = math.remainder(h - heading[i], 2 * math.pi)
+                if readings.turns == "jitter" and abs(turn) > 1e-9:  # flown off by <= 5 degrees
                     h += math.radians(5.0) * (2 * streams.heading.random() - 1)
             h2 = inward(i, h)
             if h2 != h:

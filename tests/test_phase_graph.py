@@ -13,6 +13,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from phase_inputs import component, members, node_arrays, pack, padded, words
+from sarlink.engine.codes import Mode, Parked, Reachability
 from sarlink.engine.graph import (
     add,
     bit,
@@ -128,7 +129,7 @@ def test_a_drone_linked_to_the_bs_only_through_the_target_has_no_route() -> None
     adj, routed, stack = _graph_arrays(n, neighbours)
     bs_component(adj, n, routed, stack)
     assert members(routed) == {1, 2}
-    assert reachability(adj, routed, n) == (True, 1)
+    assert reachability(adj, routed, np.zeros(n, dtype=np.int8)) == (True, 1)
 
 
 @given(graph=graphs(), knowers=st.lists(st.booleans(), min_size=70, max_size=70))
@@ -150,16 +151,24 @@ def test_flooding_informs_exactly_the_components_of_the_knowers(
     assert told == (n in expected)
 
 
-@given(graphs())
+@given(graphs(), st.lists(st.booleans(), min_size=70, max_size=70))
 def test_reachability_counts_routed_drones_and_a_target_linked_to_one(
-        graph: tuple[int, list[set[int]]]) -> None:
+        graph: tuple[int, list[set[int]]], landed: list[bool]) -> None:
+    """Every reading of reachability and of parked drones: a parked drone (landed) is a relay
+    like any other, or part of the BS (not connected, its target link the BS's own, which only
+    ``direct`` counts)."""
     n, neighbours = graph
     adj, routed, stack = _graph_arrays(n, neighbours)
     bs_component(adj, n, routed, stack)
     routed_nodes = component({n}, neighbours, blocked=n + 1)
-    reachable, connected = reachability(adj, routed, n)
-    assert connected == len(routed_nodes - {n})
-    assert reachable == bool(neighbours[n + 1] & routed_nodes)
+    mode = np.array([Mode.LANDED if x else Mode.SEARCHING for x in landed[:n]], dtype=np.int8)
+    for how in Reachability:
+        for parked in Parked:
+            flying = {i for i in range(n) if parked == Parked.RELAY or not landed[i]}
+            via = set(range(n + 1)) if how == Reachability.DIRECT else flying
+            reachable, connected = reachability(adj, routed, mode, int(how), int(parked))
+            assert connected == len(routed_nodes & flying)
+            assert reachable == bool(neighbours[n + 1] & routed_nodes & via)
 
 
 # -- bitset helpers ---------------------------------------------------------------------------

@@ -36,10 +36,11 @@ FAR_TARGET = (100.0, 3900.0)  # never sensed in these few steps
 
 def _headings(planner: str, positions: list[tuple[float, float]], angles: list[float],
               steps: int = 6, **choices: object) -> np.ndarray:
-    """The recorded headings of a hand-placed team as unit vectors ``(step, drone, 2)``,
-    every commanded turn flown exactly unless ``turns`` says otherwise."""
+    """The recorded headings of a hand-placed team as unit vectors ``(step, drone, 2)``:
+    unless ``choices`` say otherwise, every commanded turn flown exactly and a vanishing
+    Eq. 9 turning to θ_ij, so that a heading is one number the test can work out."""
     mission = Mission.build(planner=planner, drones=len(positions), horizon=float(steps),
-                            **{"turns": "exact", **choices})
+                            **{"turns": "exact", "conb_fallback": "contact", **choices})
     scenario = Scenario(target=FAR_TARGET, positions=np.array(positions),
                         headings=np.array(angles))
     trajectory = simulate(mission, scenario=scenario, trajectory=True).trajectory

@@ -38,3 +38,15 @@ def d2(xa: float, ya: float, za: float, xb: float, yb: float, zb: float) -> floa
 def inside(x: float, y: float, size: float) -> bool:
     """Whether ``(x, y)`` lies in the square area ``[0, size]²``."""
     return 0.0 <= x <= size and 0.0 <= y <= size
+
+
+TURNED = 1e-9
+"""The smallest change of heading, rad, that counts as a turn: a rule's sums of unit vectors
+round in their last bits."""
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def turned(hx: float, hy: float, nx: float, ny: float) -> bool:
+    """Whether the unit heading ``(nx, ny)`` is another than ``(hx, hy)``, by more than
+    :data:`TURNED`."""
+    return abs(hx * ny - hy * nx) > TURNED or hx * nx + hy * ny < 0.0

@@ -8,7 +8,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine.geometry import inside, unit
+from sarlink.engine.geometry import inside, turned, unit
 from sarlink.engine.params import (
     DETECTOR_ONLY,
     LANDED,
@@ -109,9 +109,10 @@ def turn_errors(p: Params, deciding: np.ndarray, hx: np.ndarray, hy: np.ndarray,
     """Fly every commanded change of heading off by a uniform error of at most
     ``p.turn_error`` (``readings.turns = jitter``): a drone's compass and heading control hold
     a heading to a few degrees, not to the last bit. Only a drone that decides and is told a
-    new heading draws, in drone order, so a kept heading is flown as it was."""
+    new heading (by more than :data:`~sarlink.engine.geometry.TURNED`, so that rounding in a
+    rule's sums is no turn) draws, in drone order; a kept heading is flown as it was."""
     for i in range(nhx.shape[0]):
-        if deciding[i] and (nhx[i] != hx[i] or nhy[i] != hy[i]):
+        if deciding[i] and turned(hx[i], hy[i], nhx[i], nhy[i]):
             e = p.turn_error * (2.0 * rng.random() - 1.0)
             c, s = math.cos(e), math.sin(e)
             nhx[i], nhy[i] = c * nhx[i] - s * nhy[i], s * nhx[i] + c * nhy[i]
