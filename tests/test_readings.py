@@ -160,10 +160,11 @@ def test_the_variants_change_one_choice_to_each_other_value() -> None:
     names = [v.name for v in variants(READINGS["sarlink-1"])]
     assert names == ["conb_check=continuous", "contacts=all", "isolated=home",
                      "concov_fallback=connectivity", "concov_connected=none", "takeoff=random",
-                     "takeoff=jitter", "conb_fallback=heading", "covb_direction=printed",
-                     "shadowing=run", "shadowing=correlated", "reachability=multihop",
-                     "mtsp_plan=per-run", "mtsp_prediction=paths", "td_fig3=1000",
-                     "td_fig3=4000"]
+                     "takeoff=jitter", "conb_fallback=heading", "conb_fallback=limit",
+                     "turns=jitter", "covb_direction=printed", "shadowing=run",
+                     "shadowing=correlated", "shadow_calibration=mean-area", "parked=base",
+                     "reachability=multihop", "mtsp_plan=per-run", "mtsp_prediction=paths",
+                     "td_fig3=1000", "td_fig3=4000"]
     assert [v.name for v in variants(READINGS["literal"])][:2] == ["conb_check=period",
                                                                    "contacts=routed"]
 
@@ -184,20 +185,30 @@ def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult)
         reach = reaches(get_planner(planner), experiment)
         return {"-".join(r.choices[c] for c in reach) for r in READINGS.values()}
 
-    # CovB: the take-off, Eq. 8's direction, reachability; mTSP: reachability, the plan
-    assert folders["covb"] == sorted({"even-push-direct", "random-push-direct",
-                                      "jitter-push-direct", "even-printed-direct",
-                                      "even-push-multihop"} | presets("covb"))
-    assert folders["mtsp"] == sorted({"direct-shared", "multihop-shared", "direct-per-run"}
+    # CovB: the take-off, Eq. 8's direction, reachability, the turns, parked drones
+    assert folders["covb"] == sorted({
+        "even-push-direct-exact-relay", "random-push-direct-exact-relay",
+        "jitter-push-direct-exact-relay", "even-printed-direct-exact-relay",
+        "even-push-multihop-exact-relay", "even-push-direct-jitter-relay",
+        "even-push-direct-exact-base"} | presets("covb"))
+    # mTSP: reachability, the plan, parked drones
+    assert folders["mtsp"] == sorted({"direct-shared-relay", "multihop-shared-relay",
+                                      "direct-per-run-relay", "direct-shared-base"}
                                      | presets("mtsp"))
-    assert folders["conb"] == sorted(
-        {"period-routed-keep-even-contact-direct", "continuous-routed-keep-even-contact-direct",
-         "period-all-keep-even-contact-direct", "period-routed-home-even-contact-direct",
-         "period-routed-keep-random-contact-direct", "period-routed-keep-jitter-contact-direct",
-         "period-routed-keep-even-heading-direct", "period-routed-keep-even-contact-multihop"}
-        | presets("conb"))
+    assert folders["conb"] == sorted({
+        "period-routed-keep-even-contact-direct-exact-relay",
+        "continuous-routed-keep-even-contact-direct-exact-relay",
+        "period-all-keep-even-contact-direct-exact-relay",
+        "period-routed-home-even-contact-direct-exact-relay",
+        "period-routed-keep-random-contact-direct-exact-relay",
+        "period-routed-keep-jitter-contact-direct-exact-relay",
+        "period-routed-keep-even-heading-direct-exact-relay",
+        "period-routed-keep-even-limit-direct-exact-relay",
+        "period-routed-keep-even-contact-multihop-exact-relay",
+        "period-routed-keep-even-contact-direct-jitter-relay",
+        "period-routed-keep-even-contact-direct-exact-base"} | presets("conb"))
     base = READINGS["sarlink-1"].choices
-    for planner, singles in (("mtsp-conb", 10), ("concov", 11)):  # the reading and its changes
+    for planner, singles in (("mtsp-conb", 13), ("concov", 14)):  # the reading and its changes
         reach = reaches(get_planner(planner), experiment)
         changed = {"-".join({**base, v.choice: v.value}[c] for c in reach)
                    for v in study.variants if v.choice in reach}
@@ -209,7 +220,7 @@ def test_a_change_reruns_only_the_planners_it_reaches(study: ReproductionResult)
 def test_a_changed_reading_s_runs_are_those_of_its_missions(study: ReproductionResult) -> None:
     """The stored runs of ConB under the continuous check are those simulated directly."""
     runs = load(study.out / "runs" / "miss" / "conb" /
-                "continuous-routed-keep-even-contact-direct")
+                "continuous-routed-keep-even-contact-direct-exact-relay")
     for row in runs.itertuples():
         mission = Mission.build(reading="sarlink-1", conb_check="continuous", planner="conb",
                                 drones=10, rc=500.0, horizon=1000.0, stop="detected",
@@ -360,14 +371,14 @@ def test_reachability_counts_a_direct_target_bs_link_or_only_routes_over_drones(
 def _parked(parked: str, reachability: str = "multihop") -> tuple[float, float]:
     """Seconds of 10 the target at (2600, 2000), 600 m from the BS, was reachable, and the
     mean share of drones connected, for one CovB drone 10 m north of the BS whose 3 s of
-    flight send it home at once: it lands at the BS at step 2 and stays there."""
+    flight send it home at once: it is parked at the BS from step 2 on."""
     mission = Mission.build(planner="covb", drones=1, horizon=10.0, checkpoint=10.0,
                             flight_time=3.0, reachability=reachability, parked=parked)
     scenario = Scenario(target=(2600.0, 2000.0), positions=np.array([(2000.0, 2010.0)]),
                         headings=np.array([math.pi / 2]))
     result = simulate(mission, scenario=scenario, trajectory=True)
     assert result.trajectory is not None
-    assert list(result.trajectory.mode[:4, 0]) == [Mode.RETURNING, Mode.RETURNING, Mode.LANDED,
+    assert list(result.trajectory.mode[:4, 0]) == [Mode.SEARCHING, Mode.RETURNING, Mode.LANDED,
                                                    Mode.LANDED]
     return float(result.reach_cum[-1]), result.connected_fraction()
 
@@ -484,7 +495,8 @@ def test_mtsp_conb_predicts_the_mtsp_drones_by_heading_or_along_their_paths() ->
 
     def heading_of_drone_1(prediction: str) -> tuple[float, float]:
         mission = Mission.build(planner="mtsp-conb", drones=2, rc=1000.0, horizon=3.0,
-                                conb_check="continuous", mtsp_prediction=prediction)
+                                conb_check="continuous", mtsp_prediction=prediction,
+                                turns="exact")
         prepared = Prepared.build(mission, Steering(rule=CONB, routes=(route,)))
         trajectory = prepared.run(0, 0, scenario=scenario, trajectory=True).trajectory
         assert trajectory is not None
