@@ -30,10 +30,15 @@ CASES: list[tuple[str, dict[str, object]]] = [
     ("takeoff", {"planner": "conb", "drones": 2, "rc": 1000.0}),
     ("takeoff", {"planner": "concov", "drones": 6, "rc": 1000.0}),
     ("conb_fallback", {"planner": "conb", "drones": 10, "rc": 1000.0}),
+    ("turns", {"planner": "conb", "drones": 10, "rc": 1000.0}),
+    ("turns", {"planner": "covb", "drones": 10, "rc": 1000.0}),
     ("covb_direction", {"planner": "covb", "drones": 10, "rc": 1000.0}),
     ("shadowing", {"planner": "conb", "drones": 10, "rc": 1000.0, "sigma": 3.0}),
     ("shadowing", {"planner": "mtsp", "drones": 10, "rc": 1000.0, "sigma": 3.0}),
+    ("shadow_calibration", {"planner": "conb", "drones": 10, "rc": 1000.0, "sigma": 3.0}),
     ("reachability", {"planner": "covb", "drones": 10, "rc": 500.0}),
+    ("parked", {"planner": "mtsp", "drones": 10, "rc": 500.0}),
+    ("parked", {"planner": "mtsp", "drones": 22, "rc": 500.0}),
     ("reachability", {"planner": "covb", "drones": 10, "rc": 2000.0}),
     ("mtsp_plan", {"planner": "mtsp", "drones": 20, "rc": 1000.0}),
     ("mtsp_plan", {"planner": "mtsp", "drones": 22, "rc": 1000.0}),
@@ -53,10 +58,12 @@ def _row(choice: str, value: str, point: dict[str, object], runs: int) -> str:
     mission_time = float(notify[done].mean()) if done.any() else math.nan
     immediate = float(np.mean([r.immediate for r in results]))
     reach = float(np.mean([r.t_reachable(4000.0) for r in results])) / 40.0
+    connected = float(np.mean([r.connected_fraction(4000.0) for r in results]))
     where = ", ".join(f"{k}={v:g}" if isinstance(v, float) else f"{k}={v}"
                       for k, v in point.items())
     return (f"| `{choice}` | {where} | {value} | {float(np.mean(detect <= TD)):.3f} | "
-            f"{ps:.3f} ± {se:.3f} | {mission_time:.0f} | {immediate:.3f} | {reach:.1f} |")
+            f"{ps:.3f} ± {se:.3f} | {mission_time:.0f} | {immediate:.3f} | {reach:.1f} | "
+            f"{connected:.2f} |")
 
 
 def main(runs: int) -> str:
@@ -66,9 +73,10 @@ def main(runs: int) -> str:
              f"the default's value is in bold. P_d and P_s at t_d = {TD:g} s (± one binomial "
              "standard error), mission time = mean notification time of the runs notified "
              "within 4000 s, immediate = share notified at the step of detection, reachability "
-             "= mean % of the 4000 s the target had a route to the BS.", "",
+             "= mean % of the 4000 s the target had a route to the BS, connected = mean share "
+             "of the drones with a route to the BS over the 4000 s.", "",
              "| choice | point | value | P_d | P_s | mission time, s | immediate | "
-             "reachability, % |", "|---|---|---|---|---|---|---|---|"]
+             "reachability, % | connected |", "|---|---|---|---|---|---|---|---|---|"]
     default = READINGS[DEFAULT_READING].choices
     t0 = time.perf_counter()
     for choice, point in CASES:

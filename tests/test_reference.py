@@ -39,11 +39,8 @@ CASES = {
     "conb-check-period": {"planner": "conb", "conb_check": "period"},
     "concov-fallback-heading": {"planner": "concov", "concov_fallback": "heading",
                                 "takeoff": "even"},  # radial: resultants cancel
-    "conb-sarlink-3": {"planner": "conb", "reading": "sarlink-3"},
     "conb-limit-exact": {"planner": "conb", "turns": "exact", "takeoff": "even"},
     "conb-landing-relay": {"planner": "conb", "flight_time": 700.0, "parked": "relay"},
-    "covb-landing-direct": {"planner": "covb", "flight_time": 700.0,
-                            "reachability": "direct"},
     "concov-mean-area-shadowing": {"planner": "concov", "sigma": 3.0,
                                    "shadow_calibration": "mean-area"},
 }
