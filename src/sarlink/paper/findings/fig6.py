@@ -19,11 +19,13 @@ def low_reachability_small_range(t: PairedTables, s: Settings) -> Verdict:
     one lies above)."""
     v = Verdict()
     rc = RANGES[0]
+    low = _below(LOW)
     for p in PAPER_PLANNERS:
         e = {n: _stat(t, "reachability", p, n, rc, TD_LONG).estimate() for n in DRONES}
         highest = max(e, key=lambda n: e[n].value)
-        v.test(worst(x.below(LOW) for x in e.values()),
-               f"{_rc(rc)}, {_label(p)}: highest reachability {e[highest]} at N_m = {highest}")
+        v.test(worst(low(x) for x in e.values()),
+               f"{_rc(rc)}, {_label(p)}: highest reachability {e[highest]} at N_m = {highest}",
+               low.levels, worst(low.rule(x, True) for x in e.values()))
     return v
 
 
@@ -32,7 +34,8 @@ def low_reachability_small_range(t: PairedTables, s: Settings) -> Verdict:
        "At small r_c ConB has the best target reachability.")
 def conb_reachability_best(t: PairedTables, s: Settings) -> Verdict:
     """At t_d = 4000 s and r_c = 500 m: ConB's target reachability minus each other planner's,
-    averaged over team sizes (paired), lies above 0."""
+    averaged over team sizes (paired; mTSP-ConB above N_r, where it is not mTSP), lies
+    above 0."""
     v = Verdict()
     _gaps(v, t, "reachability", ["conb"], _others("conb"), RANGES[:1], TD_LONG, _above())
     return v
