@@ -34,8 +34,9 @@ from sarlink.planners import PAPER_PLANNERS
        "With ideal sensing mTSP, CovB, mTSP-ConB and ConCov detect with P_d above 0.9.",
        ("miss_runs",))
 def ideal_detection(t: PairedTables, s: Settings) -> Verdict:
-    """In Fig. 7a's setting (N_m = 10, r_c = 500 m, t_d = 1000 s) with ideal sensing
-    (p_miss = 0): P_d lies above 0.9 for mTSP, CovB, mTSP-ConB and ConCov."""
+    """"able to detect the target with probability higher than 90%": in Fig. 7a's setting (N_m
+    = 10, r_c = 500 m, t_d = 1000 s) with ideal sensing (p_miss = 0): P_d lies above 0.9 for
+    mTSP, CovB, mTSP-ConB and ConCov."""
     v = Verdict()
     for p in ("mtsp", "covb", "mtsp-conb", "concov"):
         e = t.miss_runs.stat("P_d", p, 0.0, td=TD_SHORT).estimate()
@@ -46,13 +47,15 @@ def ideal_detection(t: PairedTables, s: Settings) -> Verdict:
 @claim("Fig. 7a", "4.3. Impact of nonideal sensing and channel conditions",
        "When there are sensor errors, the detection probability decreases as expected. [...] "
        "Further observe that performance trends are changing in a similar manner for all "
-       "schemes.", "Detection falls with the miss probability, for every scheme.",
+       "schemes. This means the path planners can tolerate some errors [...] and under these "
+       "conditions the findings from ideal conditions could be generalized.",
+       "Detection falls with the miss probability alike for every scheme, keeping their order.",
        ("miss_runs",))
 def detection_falls_with_miss(t: PairedTables, s: Settings) -> Verdict:
-    """In Fig. 7a (N_m = 10, r_c = 500 m, t_d = 1000 s), paired. "Decreases": for every
+    """In Fig. 7a (N_m = 10, r_c = 500 m, t_d = 1000 s), paired. "decreases": for every
     planner, P_d at the largest miss probability (0.9) minus at 0 lies below 0, and P_d rises
     from no miss probability to the next by more than 0.02 (a rise the figure shows:
-    contradicted if one does). "In a similar manner for all schemes", whence "the findings from
+    contradicted if one does). "in a similar manner for all schemes", whence "the findings from
     ideal conditions could be generalized": the planners' order at p_miss = 0 is kept, as for
     Fig. 7b: for every pair whose P_d at p_miss = 0 differs by more than 0.02 (an order the
     figure shows), the difference averaged over the miss probabilities above 0 lies on the
@@ -81,9 +84,10 @@ def detection_falls_with_miss(t: PairedTables, s: Settings) -> Verdict:
        "not too high", "While the miss probability is small, detection barely changes.",
        ("miss_runs",))
 def detection_robust_to_small_miss(t: PairedTables, s: Settings) -> Verdict:
-    """In Fig. 7a, for every planner and each miss probability up to 0.2: P_d minus P_d at
-    p_miss = 0 (paired) lies above −0.1 (holds if its interval does, contradicted if its
-    interval lies below)."""
+    """In Fig. 7a, for every planner and each miss probability up to 0.2 ("if the miss
+    probability is not too high"): P_d minus P_d at p_miss = 0 (paired) lies above −0.1 ("not
+    significantly affected"; holds if its interval does, contradicted if its interval lies
+    below)."""
     v = Verdict()
     small = Decide(lambda e, lenient: e.above(-_value(SMALL, lenient)), (SMALL,))
     for p in PAPER_PLANNERS:
@@ -135,12 +139,13 @@ def _shadowing_rc(t: PairedTables) -> float:
        "the BS, relay detections from farther out, so mTSP-ConB gains more than mTSP and "
        "passes it."))
 def shadowing_keeps_trends(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 7b's r_c (1000 m) and t_d = 4000 s, immediate notification averaged over team
-    sizes (paired; mTSP-ConB above N_r, where it is not mTSP), with log-normal shadowing
-    (Fig. 7b) and without (Fig. 5): for every pair of planners whose difference without
-    shadowing lies beyond 0.02 (an order the figure shows), the difference with shadowing lies
-    on the same side of 0 (contradicted if it lies on the other). With no such order to keep,
-    undecided if more runs could show one, otherwise not testable."""
+    """"the performance trends are similar to those of the simplified communication model": at
+    Fig. 7b's r_c (1000 m) and t_d = 4000 s, immediate notification averaged over team sizes
+    (paired; mTSP-ConB above N_r, where it is not mTSP), with log-normal shadowing (Fig. 7b)
+    and without (Fig. 5): for every pair of planners whose difference without shadowing lies
+    beyond 0.02 (an order the figure shows), the difference with shadowing lies on the same
+    side of 0 (contradicted if it lies on the other). With no such order to keep, undecided if
+    more runs could show one, otherwise not testable."""
     v = Verdict()
     rc = _shadowing_rc(t)
     orders = []
@@ -167,10 +172,11 @@ def shadowing_keeps_trends(t: PairedTables, s: Settings) -> Verdict:
        "link range at r_c, so the mean link area exceeds the disc's), and the mTSP schemes, "
        "whose detections are often out of reach of the disc, gain far more than slightly."))
 def shadowing_helps_mtsp_slightly(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 7b's r_c and t_d = 4000 s, for mTSP and mTSP-ConB (above N_r, where it is not
-    mTSP): the immediate notification with shadowing minus without, averaged over team sizes
-    (paired: the same runs' targets), lies within [0, 0.1] (holds if its interval does,
-    contradicted if it lies outside)."""
+    """"the notification probability is improved slightly for mTSP schemes": at Fig. 7b's r_c
+    and t_d = 4000 s, for mTSP and mTSP-ConB (above N_r, where it is not mTSP): the immediate
+    notification with shadowing minus without, averaged over team sizes (paired: the same runs'
+    targets), lies within [0, 0.1] (holds if its interval does, contradicted if it lies
+    outside)."""
     v = Verdict()
     rc = _shadowing_rc(t)
     for p in ("mtsp", "mtsp-conb"):

@@ -34,10 +34,11 @@ from sarlink.planners import PAPER_PLANNERS
        "approaches 1 even with short target durations.",
        "As r_c grows, P_s at a short t_d rises toward 1.")
 def larger_range_short_td(t: PairedTables, s: Settings) -> Verdict:
-    """A trend, at the short t_d = 1000 s, for every planner and each team size of Fig. 2
-    (10 and 22): P_s at r_c = 2000 m minus at 500 m (paired) lies above 0 (equal in every run,
-    both at 1 say, is not testable), and P_s falls from no range to the next by more than
-    0.02 (a fall the figure shows: contradicted if one does)."""
+    """"as r_c becomes larger mission success probability approaches 1 even with short target
+    durations": a trend, at the short t_d = 1000 s, for every planner and each team size of
+    Fig. 2 (10 and 22): P_s at r_c = 2000 m minus at 500 m (paired) lies above 0 (equal in
+    every run, both at 1 say, is not testable), and P_s falls from no range to the next by more
+    than 0.02 (a fall the figure shows: contradicted if one does)."""
     v = Verdict()
     for n in FIG2_DRONES:
         for p in PAPER_PLANNERS:
@@ -50,8 +51,9 @@ def larger_range_short_td(t: PairedTables, s: Settings) -> Verdict:
        "In the case of ConB, the drones are allowed to spread more with higher transmission "
        "ranges.", "ConB covers more of the area (P_d) as r_c grows.")
 def conb_spreads_with_range(t: PairedTables, s: Settings) -> Verdict:
-    """For ConB at t_d = 4000 s: P_d at each larger r_c minus at the next smaller one,
-    averaged over team sizes (paired), lies above 0."""
+    """"the drones are allowed to spread more with higher transmission ranges": for ConB at t_d
+    = 4000 s: P_d at each larger r_c minus at the next smaller one, averaged over team sizes
+    (paired), lies above 0."""
     v = Verdict()
     for a, b in itertools.pairwise(RANGES):
         per = {n: _stat(t, "P_d", "conb", n, b, TD_LONG) - _stat(t, "P_d", "conb", n, a, TD_LONG)
@@ -65,9 +67,10 @@ def conb_spreads_with_range(t: PairedTables, s: Settings) -> Verdict:
        "their return path.",
        "At small r_c most of mTSP's and CovB's notifications come after detection.")
 def coverage_notify_later_small_range(t: PairedTables, s: Settings) -> Verdict:
-    """At the smallest r_c (500 m) and t_d = 4000 s, for mTSP and CovB: the immediate
-    notification probability (the share of detections notified at once), averaged over team
-    sizes, lies below 0.5: most notifications come later."""
+    """"with smaller r_c the drones can inform the BS mostly on their return path": at the
+    smallest r_c (500 m) and t_d = 4000 s, for mTSP and CovB: the immediate notification
+    probability (the share of detections notified at once), averaged over team sizes, lies
+    below 0.5: most notifications come later."""
     v = Verdict()
     rc = RANGES[0]
     for p in COVERAGE:
@@ -81,8 +84,9 @@ def coverage_notify_later_small_range(t: PairedTables, s: Settings) -> Verdict:
        "and hence the mission success probability of mTSP in this case is 1.",
        "At t_d = 4000 s mTSP succeeds with probability 1 even with 2 drones.")
 def mtsp_two_drones(t: PairedTables, s: Settings) -> Verdict:
-    """For every r_c, every run of mTSP with N_m = 2 notifies the BS within t_d = 4000 s. A
-    single run not notified contradicts the claim at any sample size."""
+    """"the mission success probability of mTSP in this case is 1": for every r_c, every run of
+    mTSP with N_m = 2 notifies the BS within t_d = 4000 s. A single run not notified
+    contradicts the claim at any sample size."""
     v = Verdict()
     for rc in RANGES:
         e = _stat(t, "P_s", "mtsp", 2, rc, TD_LONG)
@@ -102,8 +106,8 @@ def mtsp_two_drones(t: PairedTables, s: Settings) -> Verdict:
        "drones sweep that disc sooner, and at r_c = 1000 and 2000 m the disc and its sensing "
        "rim hold much of the area, so ConB's P_s grows with N_m."))
 def drones_do_not_help_conb(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 3's t_d and every r_c, ConB's gain in P_s from N_m = 2 to 22 (paired) lies
-    below 0.1."""
+    """"adding more drones does not help ConB": at Fig. 3's t_d and every r_c, ConB's gain in
+    P_s from N_m = 2 to 22 (paired) lies below 0.1."""
     v = Verdict()
     for rc in RANGES:
         e = _change(t, "P_s", "conb", (DRONES[0], rc, s.td_fig3),
@@ -118,9 +122,10 @@ def drones_do_not_help_conb(t: PairedTables, s: Settings) -> Verdict:
        "mTSP and coverage-based schemes, significantly",
        "More drones, and a larger r_c, raise mTSP's and CovB's P_s.")
 def density_helps_coverage(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 3's t_d, for mTSP and CovB (paired): the gain in P_s from N_m = 2 to 22 lies
-    above 0 at every r_c, and the gain from r_c = 500 to 2000 m, averaged over team sizes,
-    lies above 0."""
+    """"higher spatial density (due to higher r_c and/or N_m) improves the performance of mTSP
+    and coverage-based schemes": at Fig. 3's t_d, for mTSP and CovB (paired): the gain in P_s
+    from N_m = 2 to 22 lies above 0 at every r_c, and the gain from r_c = 500 to 2000 m,
+    averaged over team sizes, lies above 0."""
     v = Verdict()
     td = s.td_fig3
     for p in COVERAGE:
@@ -139,9 +144,9 @@ def density_helps_coverage(t: PairedTables, s: Settings) -> Verdict:
        "The hybrid schemes highly benefit from integrating connectivity in the search "
        "decisions.", "Both hybrids beat ConB in P_s.")
 def hybrids_beat_conb(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 3's t_d and every r_c, for ConCov and for mTSP-ConB: its P_s minus ConB's,
-    averaged over team sizes (paired; mTSP-ConB above N_r, where it is a hybrid), lies
-    above 0."""
+    """"The hybrid schemes highly benefit from integrating connectivity": at Fig. 3's t_d and
+    every r_c, for ConCov and for mTSP-ConB: its P_s minus ConB's, averaged over team sizes
+    (paired; mTSP-ConB above N_r, where it is a hybrid), lies above 0."""
     v = Verdict()
     _gaps(v, t, "P_s", HYBRIDS, ["conb"], RANGES, s.td_fig3, _above())
     return v
@@ -151,9 +156,10 @@ def hybrids_beat_conb(t: PairedTables, s: Settings) -> Verdict:
        "The performance improvement of both schemes over ConB is most evident when r_c is "
        "low.", "The hybrids' advantage over ConB is largest at the smallest r_c.")
 def hybrids_gain_most_at_low_range(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 3's t_d, for ConCov and for mTSP-ConB: its advantage over ConB in P_s at
-    r_c = 500 m minus the advantage at each larger r_c, averaged over team sizes (all paired:
-    the same runs; mTSP-ConB above N_r, where it is a hybrid), lies above 0."""
+    """"The performance improvement of both schemes over ConB is most evident when r_c is low":
+    at Fig. 3's t_d, for ConCov and for mTSP-ConB: its advantage over ConB in P_s at r_c = 500
+    m minus the advantage at each larger r_c, averaged over team sizes (all paired: the same
+    runs; mTSP-ConB above N_r, where it is a hybrid), lies above 0."""
     v = Verdict()
     td = s.td_fig3
     for h in HYBRIDS:
@@ -172,10 +178,10 @@ def hybrids_gain_most_at_low_range(t: PairedTables, s: Settings) -> Verdict:
        "time it still suffers from delayed notification.",
        "With more drones ConCov pulls ahead of mTSP-ConB.")
 def concov_beats_mtsp_conb(t: PairedTables, s: Settings) -> Verdict:
-    """Read where the paper observes it, P_s against N_m (Fig. 3's t_d), at every r_c:
-    ConCov's P_s minus mTSP-ConB's at the largest team (22) lies above 0, and it grows from
-    mTSP-ConB's smallest own team (8 drones, the first above N_r) to 22 (paired change above
-    0)."""
+    """"as N_m is increased ConCov significantly outperforms mTSP-Con": read where the paper
+    observes it, P_s against N_m (Fig. 3's t_d), at every r_c: ConCov's P_s minus mTSP-ConB's
+    at the largest team (22) lies above 0, and it grows from mTSP-ConB's smallest own team (8
+    drones, the first above N_r) to 22 (paired change above 0)."""
     v = Verdict()
     first, last, td = HYBRID_SMALL_TEAMS[0], DRONES[-1], s.td_fig3
     for rc in RANGES:
@@ -196,8 +202,8 @@ def concov_beats_mtsp_conb(t: PairedTables, s: Settings) -> Verdict:
 def concov_spreads_and_connects(t: PairedTables, s: Settings) -> Verdict:
     """ConCov weighs CovB's search and ConB's connectivity equally, so each half is held
     against the component without it. At t_d = 4000 s and every r_c, averaged over team sizes
-    (paired): ConCov's mean fraction of drones connected to the BS minus CovB's lies above 0
-    (stays connected), and its P_d minus ConB's lies above 0 (spreads out)."""
+    (paired): "stay connected", ConCov's mean fraction of drones connected to the BS minus
+    CovB's lies above 0; "spread out", its P_d minus ConB's lies above 0."""
     v = Verdict()
     _gaps(v, t, "connected", ["concov"], ["covb"], RANGES, TD_LONG, _above())
     _gaps(v, t, "P_d", ["concov"], ["conb"], RANGES, TD_LONG, _above())
@@ -222,12 +228,12 @@ def _dominated(t: PairedTables, planners: tuple[str, str]) -> list[tuple[int, fl
        "t_d and no later than CovB: its N_r = 6 tour drones search as mTSP's do and its "
        "other drones cost it no search there."))
 def hybrids_trail_coverage(t: PairedTables, s: Settings) -> Verdict:
-    """Where the detection task dominates the mission times: at the grid points (N_m, r_c)
+    """"when the detection task dominates the mission times": at the grid points (N_m, r_c)
     where the search share of the mission time (Fig. 4b, t_d = 4000 s) of both compared
-    planners lies above one half. There, for each hybrid against each of mTSP and CovB, the
-    hybrid's P_s at Fig. 3's t_d minus the other's, averaged over those points (paired;
-    mTSP-ConB above N_r, where it is a hybrid), lies below 0; with no such point, not
-    testable."""
+    planners lies above one half. There, "they might still require more resources than mTSP and
+    CovB": for each hybrid against each of mTSP and CovB, the hybrid's P_s at Fig. 3's t_d
+    minus the other's, averaged over those points (paired; mTSP-ConB above N_r, where it is a
+    hybrid), lies below 0; with no such point, not testable."""
     v = Verdict()
     td = s.td_fig3
     for h in HYBRIDS:
