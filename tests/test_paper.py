@@ -330,6 +330,12 @@ CASES = [
     Case(fig1.conb_plan_time_grows, _plan(_FAST), UNDECIDED, "constant"),
     Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS), HOLDS,
          "grow with N_m, like ConB's at 22 drones, 2.5 times CovB's"),
+    Case(fig1.hybrid_plan_times, _plan(_FAST | {"conb": lambda n: 0.001 * n} | dict.fromkeys(
+        _HYBRIDS, lambda n: 0.05 + 0.001 * n)), HOLDS,
+         "26 times ConB's with 2 drones, 3.3 times with 22: approaching, though not within 2"),
+    Case(fig1.hybrid_plan_times, _plan(_FAST | {"conb": lambda n: 0.001 * n} | dict.fromkeys(
+        _HYBRIDS, lambda n: 0.001 * n * n)), CONTRADICTED,
+         "as ConB's with 2 drones, 11 times with 22: moving away"),
     Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {"concov": lambda n: 0.001}),
          CONTRADICTED, "ConCov as fast as CovB, flat"),
     Case(fig1.hybrid_plan_times, _plan(_FAST | _HYBRIDS | {

@@ -6,7 +6,9 @@ tested, names the summary tables its check reads, and has a check whose docstrin
 criterion (the report quotes it). The check tests one or more parts, each *holds*,
 *contradicted*, *undecided at this sample size* or *not testable at this setting*
 (:class:`~sarlink.paper.evidence.Outcome`); the claim's outcome is that of its parts together
-(:func:`~sarlink.paper.evidence.worst`).
+(:func:`~sarlink.paper.evidence.worst`). A claim the runs contradict under every reading
+carries the mechanism of the disagreement, written beside it (:attr:`Claim.mechanism`); the
+report shows it where :mod:`sarlink.paper.causes` finds the contradiction model-level.
 """
 
 from __future__ import annotations
@@ -57,6 +59,16 @@ class Finding:
     """Where the sentence is in the paper."""
     sentence: str = ""
     """The paper's words."""
+    name: str = ""
+    """The claim's check's name, the same under every reading."""
+    mechanism: str = ""
+    """Why the model disagrees, where no reading makes it hold (:attr:`Claim.mechanism`)."""
+
+    @property
+    def lenient(self) -> Outcome:
+        """The outcome with every threshold the paper does not state at the most lenient value
+        a reader could defend (:class:`~sarlink.paper.evidence.Level`)."""
+        return worst(p.outcome if p.lenient is None else p.lenient for p in self.parts)
 
     @property
     def holds(self) -> bool:
@@ -85,6 +97,9 @@ class Claim:
     """What is tested, in a few words."""
     tables: tuple[str, ...]
     check: Check
+    mechanism: str = ""
+    """One sentence: what in the model makes the claim fail under every reading (empty where
+    none is known to)."""
 
     @property
     def name(self) -> str:
@@ -104,7 +119,7 @@ class Claim:
         verdict = self.check(wrapped, settings)
         return Finding(self.figure, self.text, worst(p.outcome for p in verdict.parts),
                        tuple(verdict.parts), tuple(verdict.notes), self.criterion,
-                       self.section, self.sentence)
+                       self.section, self.sentence, self.name, self.mechanism)
 
 
 CLAIMS: list[Claim] = []
@@ -112,10 +127,12 @@ CLAIMS: list[Claim] = []
 
 
 def claim(figure: str, section: str, sentence: str, text: str,
-          tables: tuple[str, ...] = ("main_runs",)) -> Callable[[Check], Claim]:
-    """Register the decorated check as a claim about ``figure``, quoting ``sentence``."""
+          tables: tuple[str, ...] = ("main_runs",), mechanism: str = ""
+          ) -> Callable[[Check], Claim]:
+    """Register the decorated check as a claim about ``figure``, quoting ``sentence``, with
+    the ``mechanism`` of its disagreement where the model contradicts it under every reading."""
     def register(check: Check) -> Claim:
-        made = Claim(figure, section, sentence, text, tables, check)
+        made = Claim(figure, section, sentence, text, tables, check, mechanism)
         CLAIMS.append(made)
         return made
     return register

@@ -18,6 +18,13 @@ in every run (:attr:`Estimate.tied`), which no number of runs can settle.
   interval covers its own.
 - A claim of several parts is contradicted if any part is, undecided if any part is, and
   holds if a part holds; parts not testable decide nothing unless every part is.
+- An *existence* claim ("at some team size ...") holds where a candidate holds; candidates
+  not testable (equal in every run) are no candidates, and it is contradicted only where every
+  testable candidate is (:func:`exists`).
+- A threshold the paper does not state ("highly likely", "about x", "small") is a
+  :class:`Level`: sarlink's value decides the part, and the part also records how it comes
+  out at the most lenient value a reader could defend, so that a contradiction the threshold
+  alone decides is told apart from one that no defensible threshold removes.
 """
 
 from __future__ import annotations
@@ -35,8 +42,8 @@ from scipy import stats
 from sarlink.metrics import MEASURES, format_interval
 from sarlink.paper.experiments import DRONES
 
-__all__ = ["Estimate", "Grid", "Outcome", "Part", "PlanTimes", "SummaryTables", "Verdict",
-           "average", "peak", "worst"]
+__all__ = ["Estimate", "Grid", "Level", "Outcome", "Part", "PlanTimes", "SummaryTables",
+           "Verdict", "average", "exists", "peak", "worst"]
 
 
 class Outcome(enum.Enum):
@@ -64,6 +71,40 @@ def worst(outcomes: Iterable[Outcome]) -> Outcome:
     return Outcome.NOT_TESTABLE
 
 
+def exists(candidates: Iterable[Outcome]) -> Outcome:
+    """The outcome of "at some candidate": holds if a candidate holds; candidates not testable
+    at their setting (what they compare is equal in every run) can show nothing either way and
+    are dropped; contradicted if every remaining candidate is; not testable if none remains;
+    undecided otherwise."""
+    testable = [o for o in candidates if o is not Outcome.NOT_TESTABLE]
+    if Outcome.HOLDS in testable:
+        return Outcome.HOLDS
+    if not testable:
+        return Outcome.NOT_TESTABLE
+    return (Outcome.CONTRADICTED if all(o is Outcome.CONTRADICTED for o in testable)
+            else Outcome.UNDECIDED)
+
+
+@dataclass(frozen=True)
+class Level:
+    """A threshold the paper does not state, which a criterion had to choose to give its
+    words a meaning."""
+
+    word: str
+    """The paper's words it gives a meaning to (``'"highly likely"'``)."""
+    value: float
+    """sarlink's choice, which decides the part."""
+    lenient: float
+    """The most lenient value a reader could defend from the words alone (the side that
+    contradicts less): the part is decided again there."""
+    meaning: str
+    """What the level bounds, with ``{}`` for the number (``"a probability above {}"``)."""
+
+    def __str__(self) -> str:
+        return (f"{self.word} taken as {self.meaning.format(f'{self.value:g}')} "
+                f"(a reader could defend {self.lenient:g})")
+
+
 @dataclass(frozen=True)
 class Estimate:
     """A value with its 95% interval."""
@@ -88,6 +129,15 @@ class Estimate:
     def mapped(self, f: Callable[[float], float], digits: int) -> Estimate:
         """The estimate through an increasing function (a log ratio to a ratio, say)."""
         return Estimate(f(self.value), f(self.lo), f(self.hi), digits)
+
+    def absolute(self) -> Estimate:
+        """The estimate of ``|value|``: its interval mirrored where it lies below 0, from 0
+        where it straddles 0."""
+        if self.lo >= 0:
+            return self
+        if self.hi <= 0:
+            return Estimate(-self.value, -self.hi, -self.lo, self.digits, self.tied)
+        return Estimate(abs(self.value), 0.0, max(-self.lo, self.hi), self.digits, self.tied)
 
     def minus(self, other: Estimate) -> Estimate:
         """Newcombe's interval of the difference (see the module docstring)."""
@@ -226,6 +276,10 @@ class Part:
 
     outcome: Outcome
     text: str
+    levels: tuple[Level, ...] = ()
+    """The thresholds the paper does not state that decide this part."""
+    lenient: Outcome | None = None
+    """The outcome with every one of ``levels`` at its lenient value (None without levels)."""
 
 
 @dataclass
@@ -235,8 +289,12 @@ class Verdict:
     parts: list[Part] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
 
-    def test(self, outcome: Outcome, text: str) -> None:
-        self.parts.append(Part(outcome, text))
+    def test(self, outcome: Outcome, text: str, levels: Sequence[Level] = (),
+             lenient: Outcome | None = None) -> None:
+        """Record a part; one decided by ``levels`` also gives its ``lenient`` outcome."""
+        if bool(levels) != (lenient is not None):
+            raise ValueError("a part decided by a level gives its outcome at the lenient value")
+        self.parts.append(Part(outcome, text, tuple(levels), lenient))
 
     def note(self, text: str) -> None:
         self.notes.append(text)

@@ -16,14 +16,20 @@ is McNemar's exact conditional test at 97.5%; its ends hold also where ``m`` is 
 difference that is zero in every run is *tied*: nothing at this setting can separate the two
 (``Outcome.NOT_TESTABLE``).
 A level (one point's measure alone) keeps its Wilson interval, or t for a mean.
+
+A measure over the runs notified (mission time, its phases, the delay, the search share) is
+compared between two points over the runs notified at *both*: each point's notified runs are
+other targets (a planner that notifies only the targets near the BS has short mission times
+for that reason alone), so the difference is that of the same targets, paired run by run.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -32,11 +38,18 @@ from scipy import stats
 from sarlink.metrics import wilson
 from sarlink.paper.evidence import Estimate, SummaryTables
 
-__all__ = ["MEASURE_DIGITS", "PairedTables", "RunGrid", "Stat", "mean_of"]
+__all__ = ["MEASURE_DIGITS", "PairedTables", "RunGrid", "Stat", "mean_of", "on_common"]
 
 MEASURE_DIGITS = {"P_s": 3, "P_d": 3, "immediate": 3, "mission_time": 0, "detection_time": 0,
                   "delay": 0, "search_share": 3, "reachability": 3, "connected": 3}
 """The measures a :class:`RunGrid` computes, with their decimals when printed."""
+
+
+class Over(NamedTuple):
+    """The runs a measure is over (a mask) and the measure over a subset of them."""
+
+    runs: np.ndarray
+    restrict: Callable[[np.ndarray], Stat]
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,8 +69,14 @@ class Stat:
     the second (McNemar)."""
     contrast: bool = False
     """A comparison (it came from a difference), which can be tied."""
+    over: Over | None = None
+    """For a measure over the runs notified: those runs, and the measure over fewer of them
+    (a difference with another such measure is taken over the runs both are over)."""
 
     def __sub__(self, other: Stat) -> Stat:
+        a, b = on_common([self, other])
+        if a is not self or b is not other:
+            return a - b
         discordant = None
         if self.indicator is not None and other.indicator is not None:
             discordant = (int(np.sum(self.indicator & ~other.indicator)),
@@ -70,7 +89,10 @@ class Stat:
                     contrast=self.contrast or other.contrast)
 
     def scaled(self, k: float) -> Stat:
-        return Stat(k * self.value, k * self.influence, self.digits, contrast=self.contrast)
+        over = self.over
+        return Stat(k * self.value, k * self.influence, self.digits, contrast=self.contrast,
+                    over=None if over is None else Over(
+                        over.runs, lambda subset: over.restrict(subset).scaled(k)))
 
     def estimate(self, level: float = 0.95) -> Estimate:
         """The value with its interval at ``level`` (see the module docstring)."""
@@ -100,6 +122,17 @@ class Stat:
             return Estimate(self.value, self.value, self.value, self.digits, tied=tied)
         ci = stats.ttest_1samp(self.value + self.influence, 0.0).confidence_interval(level)
         return Estimate(self.value, float(ci.low), float(ci.high), self.digits)
+
+
+def on_common(stats: Sequence[Stat]) -> list[Stat]:
+    """Measures over the runs notified (:attr:`Stat.over`), each over the runs all of them
+    are over: the same targets, for a comparison; other statistics as they are."""
+    overs = [s.over for s in stats if s.over is not None]
+    if not overs or len(overs) < len(stats):
+        return list(stats)
+    common = np.logical_and.reduce([o.runs for o in overs])
+    return [s if np.array_equal(o.runs, common) else o.restrict(common)
+            for s, o in zip(stats, overs, strict=True)]
 
 
 def mean_of(items: Iterable[Stat]) -> Stat:
@@ -186,7 +219,8 @@ def _mean_where(x: np.ndarray, where: np.ndarray, digits: int) -> Stat:
     if not where.any():
         return _nothing(len(x), digits)
     m = float(x[where].mean())
-    return Stat(m, np.where(where, x - m, 0.0) / where.mean(), digits)
+    return Stat(m, np.where(where, x - m, 0.0) / where.mean(), digits,
+                over=Over(where, lambda subset: _mean_where(x, subset, digits)))
 
 
 def _ratio_where(x: np.ndarray, y: np.ndarray, where: np.ndarray, digits: int) -> Stat:
@@ -195,7 +229,8 @@ def _ratio_where(x: np.ndarray, y: np.ndarray, where: np.ndarray, digits: int) -
         return _nothing(len(x), digits)
     mx, my = float(x[where].mean()), float(y[where].mean())
     r = mx / my
-    return Stat(r, np.where(where, x - r * y, 0.0) / (where.mean() * my), digits)
+    return Stat(r, np.where(where, x - r * y, 0.0) / (where.mean() * my), digits,
+                over=Over(where, lambda subset: _ratio_where(x, y, subset, digits)))
 
 
 class PairedTables(SummaryTables):

@@ -12,8 +12,8 @@ import base64
 import html
 import os
 import platform
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from importlib.metadata import version
 from pathlib import Path
 
@@ -21,6 +21,7 @@ import pandas as pd
 
 from sarlink.config import DEFAULT_READING, READINGS, Mission, Reading, get_reading
 from sarlink.paper.beyond import beyond_text, others_text
+from sarlink.paper.causes import Contradiction, contradictions, first_line
 from sarlink.paper.evidence import Outcome
 from sarlink.paper.experiments import (
     BEYOND,
@@ -172,6 +173,8 @@ class Sensitivity:
     """Claim × change (columns ``figure``, ``claim``, ``default``, then one per change)."""
     flips: list[str]
     """Each claim a single change flips, with the number that decides it."""
+    findings: Mapping[str, Sequence[Finding]] = field(default_factory=dict)
+    """The claims decided under each single change, by its name (for the tally by cause)."""
 
 
 def _sensitivity(study: Sensitivity | None) -> list[_Block]:
@@ -209,17 +212,41 @@ def _presets(findings: Sequence[Finding], reading: Reading,
             _Table(pd.DataFrame(rows, columns=["reading", "what it follows", "claims"]))]
 
 
+def _other_readings(reading: Reading, presets: Mapping[str, Sequence[Finding]] | None,
+                    sensitivity: Sensitivity | None) -> dict[str, Sequence[Finding]]:
+    """The claims under every other reading decided: the other presets, the single changes."""
+    out = {name: found for name, found in (presets or {}).items()
+           if name != reading.name and found}
+    return out | dict(sensitivity.findings if sensitivity else {})
+
+
+def _causes(found: Sequence[Contradiction]) -> list[_Block]:
+    """The first table: each contradicted claim and why."""
+    if not found:
+        return []
+    rows = [(c.finding.figure, c.finding.claim, c.cause.value, c.why) for c in found]
+    return [_Para("Each contradicted claim by cause: it hinges on one reading when it holds "
+                  "under another preset or a single change of this one (named); it is decided "
+                  "by a level the paper does not state when at the most lenient value a "
+                  "reader could defend of each threshold its criterion chose no part is "
+                  "contradicted; otherwise it is a model-level disagreement, whose mechanism is "
+                  "written beside the claim (docs/reproduce.md, The tally by cause)."),
+            _Table(pd.DataFrame(rows, columns=["about", "claim", "cause",
+                                               "which reading, which level, or the mechanism"]))]
+
+
 def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
-            reading: Reading, presets: dict[str, list[Finding]] | None = None
-            ) -> list[_Block]:
+            reading: Reading, presets: dict[str, list[Finding]] | None = None,
+            found: Sequence[Contradiction] = ()) -> list[_Block]:
     """The paper's claims grouped by figure, each with its sentence, outcome, criterion and
-    numbers."""
+    numbers, after the contradicted ones by cause."""
     unchecked = [c for c in CLAIMS if not c.checkable(tables)]
     blocks: list[_Block] = [_Heading("The paper's claims", 2)]
     if not findings:
         return [*blocks, _Para("The claims are checked on the runs of the figures they are "
                                "about, none of which this reproduction included.")]
     blocks += [
+        *_causes(found),
         _Para(f"{len(findings)} of the paper's claims checked: {tally(findings)}."
               + (f" Not checked, for want of the runs of their figures: "
                  f"{len(unchecked)} ({', '.join(sorted({c.figure for c in unchecked}))})."
@@ -229,7 +256,9 @@ def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
               "criterion quoted with it. All intervals are 95%. Comparisons are paired: run k "
               "of every grid point searches for the same target, so a difference is judged "
               "run by run (McNemar's exact test on the discordant runs for two success "
-              "indicators, Student's t on per-run pseudo-values otherwise); a level has its "
+              "indicators, Student's t on per-run pseudo-values otherwise); a measure over the "
+              "runs notified (mission time, its phases, the delay) is compared over the runs "
+              "both notify, the same targets; a level has its "
               "Wilson interval; plan times have Welch and least-squares t intervals. A part "
               "holds where its interval supports it, is contradicted where the interval "
               "excludes it, is undecided at this sample size otherwise (more runs can settle "
@@ -251,7 +280,10 @@ def _claims(findings: Sequence[Finding], tables: dict[str, pd.DataFrame],
                 _Heading(f"{f.claim} — {f.outcome.value}", 4, _CSS_CLASS[f.outcome]),
                 _Para(f"The paper, {f.section}: “{f.sentence}”"),
                 _Para("Criterion: " + f.criterion),
-                _List([f"{p.text} — {p.outcome.value}" for p in f.parts]),
+                _List([f"{p.text} — {p.outcome.value}"
+                       + (f" (at the lenient level: {p.lenient.value})"
+                          if p.lenient is not None and p.lenient is not p.outcome else "")
+                       for p in f.parts]),
             ]
             if f.notes:
                 blocks += [_Para("For context:"), _List(list(f.notes))]
@@ -321,13 +353,15 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
               reading: Reading, stages: Sequence[Stage], seconds: float, workers: str,
               replay: ReplayLink | None, sensitivity: Sensitivity | None,
               presets: dict[str, list[Finding]] | None) -> list[_Block]:
+    found = contradictions(findings, _other_readings(reading, presets, sensitivity))
     intro = (f"sarlink {version('sarlink')} reran the evaluation of Yanmaz et al., "
              "\"Connectivity considerations for mission planning of a search and rescue drone "
              f"team\" (Figs. {', '.join(str(n) for n in sorted(figures))}) with "
              f"{runs} runs per grid point, under the reading {reading.name!r} of what the paper "
              "leaves open (docs/model.md, Readings).")
-    return [_Heading("Reproduction of the paper's evaluation", 1), _Para(intro),
-            *_claims(findings, tables, reading, presets), *_sensitivity(sensitivity),
+    first = [_Para(first_line(findings, found))] if findings else []
+    return [_Heading("Reproduction of the paper's evaluation", 1), *first, _Para(intro),
+            *_claims(findings, tables, reading, presets, found), *_sensitivity(sensitivity),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
             *_beyond(tables), *_others(tables), *_figures(out, figures, tables),

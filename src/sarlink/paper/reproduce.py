@@ -235,7 +235,8 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         done, timed = sensitivity(chosen, tables, out / "runs", checked, runs, workers=workers,
                                   scheduler=scheduler, progress=progress)
         stages += timed
-        study = Sensitivity(matrix(findings, done), flips(findings, done))
+        study = Sensitivity(matrix(findings, done), flips(findings, done),
+                            {v.name: list(v.findings) for v in done})
         _write_tables(out / "tables", {"sensitivity": study.matrix})
     t0 = time.perf_counter()
     replay = _replay(out, reading)

@@ -10,27 +10,38 @@ criterion; the criteria were written from the paper's words, not from the result
 
 Statistics: comparisons of planners, team sizes, ranges or target durations are *paired*
 (:mod:`sarlink.paper.paired`): run ``k`` of every point searches for the same target, so a
-difference is judged run by run. A level of one point keeps its Wilson interval. Conventions
-where the paper is loose:
+difference is judged run by run; a measure over the runs notified (mission time, its phases,
+the delay) is compared over the runs both points notify, the same targets. A level of one
+point keeps its Wilson interval. Conventions where the paper is loose:
 
 - A comparison the sentence states without a team size is decided on the average over the
   team sizes N_m = 2, ..., 22 (one paired statistic), and its part shows the per-team-size
   picture beside it: ``+`` holds, ``−`` contradicted, ``?`` undecided, ``=`` not testable
   (equal in every run). Statements about the level of every scheme ("all low") hold at every
   team size.
-- mTSP-ConB flies exactly mTSP's mission up to N_r = 6 drones, so the two are compared only
-  above N_r.
-- "Near 1" is above :data:`~.helpers.NEAR_ONE`; "about x" is x ± :data:`~.helpers.ABOUT`,
-  but never more than half of x (so "about 10 %" excludes 0); a "small" or "slight" change of
-  a probability, and "no help", is less than :data:`~.helpers.SMALL`; "mostly" is more than
-  half; "highly likely" above :data:`~.helpers.HIGHLY_LIKELY`.
-- A trend ("as r_c becomes larger ... approaches 1") is tested as a change between settings,
-  a limit ("for high r_c ... converges to 1") at the setting closest to it.
+- mTSP-ConB flies exactly mTSP's mission up to N_r = 6 drones, so wherever it is compared
+  it is compared above N_r only, where it is a hybrid.
+- A threshold the paper does not state is a :class:`~sarlink.paper.evidence.Level` with the
+  most lenient value a reader could defend, at which each part is decided again (the tally by
+  cause, :mod:`sarlink.paper.causes`): "near 1" is above :data:`~.helpers.NEAR_ONE`;
+  "about x" is x ± :data:`~.helpers.ABOUT`, but never more than half of x (so "about 10 %"
+  excludes 0) nor half the gap to a value the sentence sets against x; a "small" or "slight"
+  change of a probability, and "no help", is less than :data:`~.helpers.SMALL`; "highly
+  likely" is above :data:`~.helpers.HIGHLY_LIKELY`. Words that fix their own number do not
+  need one: "mostly" and "dominates" are more than half.
+- A trend read off a figure ("decreases monotonically", "approaches 1") is broken only by a
+  step against it that the figure would show, larger than :data:`~.helpers.VISIBLE` of the
+  axis; an order a figure shows is one larger than that. A trend is tested as a change
+  between settings, a limit ("for high r_c ... converges to 1") at the setting closest to it.
 - "Somewhere" (an existence claim) is tested at every candidate point with Bonferroni's
-  correction: 95% jointly.
-- Fig. 3's t_d, which the paper does not state, is :attr:`Settings.td_fig3`; statements the
-  paper ties to short target durations or to delayed notification are read at
-  :data:`~sarlink.paper.experiments.TD_SHORT` (1000 s, the paper's own short t_d of Fig. 7a).
+  correction: 95% jointly; a candidate equal in every run to what it is compared with can
+  show nothing and is dropped (:func:`~sarlink.paper.evidence.exists`).
+- Fig. 3's t_d, which the paper does not state, is :attr:`Settings.td_fig3`, also for what
+  the paper observes on Fig. 3 ("as N_m is increased ConCov significantly outperforms
+  mTSP-Con"). "Short target durations" for P_s are
+  :data:`~sarlink.paper.experiments.TD_SHORT` (1000 s, the paper's own short t_d of Fig. 7a);
+  where the paper's reason for a short t_d is that a target "is detected only if it is closer
+  to the BS", short is r_c / V_m, the time a drone takes to fly one communication range.
 """
 
 from __future__ import annotations

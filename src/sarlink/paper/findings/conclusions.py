@@ -23,10 +23,12 @@ from sarlink.paper.paired import PairedTables
        "(i.e. range and spatial density) are highly stringent.",
        "The planners differ most in P_s and mission time at small r_c and few drones.")
 def stringent_resources_matter_most(t: PairedTables, s: Settings) -> Verdict:
-    """Paired: the spread of the planners' P_s at Fig. 3's t_d (the highest minus the lowest,
-    picked by value), averaged over team sizes, at r_c = 500 m minus at 2000 m lies above 0;
-    and the spread of their mean mission times at t_d = 4000 s at (500 m, N_m = 2) minus at
-    (2000 m, N_m = 22) lies above 0."""
+    """"the impact of connectivity on the mission success probability and total mission times
+    is most evident when communication resources (i.e. range and spatial density) are highly
+    stringent", paired: the spread of the planners' P_s at Fig. 3's t_d (the highest minus the
+    lowest, picked by value), averaged over team sizes, at r_c = 500 m minus at 2000 m lies
+    above 0; and the spread of their mean mission times at t_d = 4000 s (over the runs the two
+    picked both notify) at (500 m, N_m = 2) minus at (2000 m, N_m = 22) lies above 0."""
     v = Verdict()
     low, high = RANGES[0], RANGES[-1]
     per = {n: _spread(t, "P_s", n, low, s.td_fig3) - _spread(t, "P_s", n, high, s.td_fig3)
@@ -45,12 +47,17 @@ def stringent_resources_matter_most(t: PairedTables, s: Settings) -> Verdict:
        "notification as well as good target reachability, it suffers from longer search "
        "times due to slower spreading than the coverage-based schemes.",
        "ConB and ConCov notify at detection more and keep the target reachable longer than "
-       "mTSP and CovB, but detect later.")
+       "mTSP and CovB, but detect later.",
+       mechanism=(
+       "At r_c = 2000 m ConCov's drones are in reach of the BS almost everywhere, where its "
+       "connectivity term keeps the heading, so it searches as CovB does and detects no "
+       "later."))
 def connectivity_aware_tradeoff(t: PairedTables, s: Settings) -> Verdict:
-    """For ConB and ConCov against mTSP and CovB, averaged over team sizes (paired): at
-    t_d = 4000 s and Fig. 5's ranges, the immediate notification and the target reachability
-    differences lie above 0; at t_d = 1000 s and every r_c, the P_d difference lies below
-    0."""
+    """For ConB and ConCov against mTSP and CovB, averaged over team sizes (paired): at t_d =
+    4000 s and Fig. 5's ranges, the immediate notification ("simultaneous detection and
+    notification") and the target reachability ("good target reachability") differences lie
+    above 0; "it suffers from longer search times": at t_d = 1000 s and every r_c, the P_d
+    difference lies below 0."""
     v = Verdict()
     _gaps(v, t, "immediate", CONNECTIVITY, COVERAGE, FIG5_RANGES, TD_LONG, _above())
     _gaps(v, t, "reachability", CONNECTIVITY, COVERAGE, FIG5_RANGES, TD_LONG, _above())
@@ -64,9 +71,11 @@ def connectivity_aware_tradeoff(t: PairedTables, s: Settings) -> Verdict:
        "mTSP and mTSP-ConB detect sooner than ConB and ConCov but notify later after "
        "detection.")
 def mtsp_fast_but_delayed(t: PairedTables, s: Settings) -> Verdict:
-    """For mTSP and mTSP-ConB against ConB and ConCov, averaged over team sizes (paired): at
-    t_d = 1000 s and every r_c the P_d difference lies above 0; at t_d = 4000 s and Fig. 5's
-    ranges the mean notification delay difference lies above 0."""
+    """For mTSP and mTSP-ConB (above N_r, where it is not mTSP) against ConB and ConCov,
+    averaged over team sizes (paired): "can find the targets fast", at t_d = 1000 s and every
+    r_c the P_d difference lies above 0; "require more tolerance to notification delays", at
+    t_d = 4000 s and Fig. 5's ranges the mean notification delay difference, over the runs both
+    notify, lies above 0."""
     v = Verdict()
     _gaps(v, t, "P_d", ("mtsp", "mtsp-conb"), CONNECTIVITY, RANGES, TD_SHORT, _above())
     _gaps(v, t, "delay", ("mtsp", "mtsp-conb"), CONNECTIVITY, FIG5_RANGES, TD_LONG, _above())

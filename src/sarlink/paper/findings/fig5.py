@@ -8,6 +8,7 @@ from sarlink.paper.experiments import DRONES, FIG5_RANGES, RANGES, TD_LONG, TD_S
 from sarlink.paper.findings.helpers import (
     HIGHLY_LIKELY,
     NEAR_ONE,
+    V_M,
     _about,
     _above,
     _averaged,
@@ -28,14 +29,19 @@ from sarlink.planners import PAPER_PLANNERS
        "notification is highly likely.",
        "At a short t_d every planner's immediate notification is highly likely.")
 def short_td_immediate_likely(t: PairedTables, s: Settings) -> Verdict:
-    """At the short t_d = 1000 s and Fig. 5's ranges, for every planner: the immediate
-    notification probability, averaged over team sizes, lies above 0.75."""
+    """"For short t_d, since the target is detected only if it is closer to the BS": a target
+    is detected by t_d only within V_m t_d + r of the BS, and "closer to the BS" is within
+    reach of it, so the short t_d is the time a drone takes to fly one communication range from
+    the BS, t_d = r_c / V_m (100 s at 500 m, 200 s at 1000 m). At that t_d and Fig. 5's ranges,
+    for every planner, "immediate notification is highly likely": the immediate notification
+    probability, averaged over team sizes, lies above 0.75."""
     v = Verdict()
     for rc in FIG5_RANGES:
+        td = rc / V_M
         for p in PAPER_PLANNERS:
-            per = {n: _stat(t, "immediate", p, n, rc, TD_SHORT) for n in DRONES}
+            per = {n: _stat(t, "immediate", p, n, rc, td) for n in DRONES}
             _averaged(v, per, _above(HIGHLY_LIKELY), f"{_rc(rc)}, {_label(p)}: immediate "
-                                                     f"notification at {TD_SHORT:g} s")
+                                                     f"notification at t_d = {td:g} s")
     return v
 
 
@@ -44,8 +50,9 @@ def short_td_immediate_likely(t: PairedTables, s: Settings) -> Verdict:
        "detected and the issue of notification becomes more critical.",
        "Immediate notification falls as t_d grows.")
 def notification_more_critical_later(t: PairedTables, s: Settings) -> Verdict:
-    """At Fig. 5's ranges, for every planner: the immediate notification probability at
-    t_d = 4000 s minus at 1000 s, averaged over team sizes (paired), lies below 0."""
+    """At Fig. 5's ranges, for every planner, "as t_d increases", "the issue of notification
+    becomes more critical": the immediate notification probability at t_d = 4000 s minus at
+    1000 s, averaged over team sizes (paired), lies below 0."""
     v = Verdict()
     for rc in FIG5_RANGES:
         for p in PAPER_PLANNERS:
@@ -61,9 +68,10 @@ def notification_more_critical_later(t: PairedTables, s: Settings) -> Verdict:
        "likely to inform the BS at the time of detection.",
        "ConB detects less but notifies at detection more than every other planner.")
 def conb_immediate_highest(t: PairedTables, s: Settings) -> Verdict:
-    """At t_d = 4000 s and Fig. 5's ranges, averaged over team sizes (paired): ConB's immediate
-    notification minus each other planner's lies above 0, and its P_d minus each other's
-    lies below 0."""
+    """At t_d = 4000 s and Fig. 5's ranges, averaged over team sizes (paired; mTSP-ConB above
+    N_r, where it is not mTSP): "much more likely to inform the BS at the time of detection",
+    ConB's immediate notification minus each other planner's lies above 0; "suffering from
+    lower detection probabilities", its P_d minus each other's lies below 0."""
     v = Verdict()
     _gaps(v, t, "immediate", ["conb"], _others("conb"), FIG5_RANGES, TD_LONG, _above())
     _gaps(v, t, "P_d", ["conb"], _others("conb"), FIG5_RANGES, TD_LONG, _below())
@@ -73,8 +81,9 @@ def conb_immediate_highest(t: PairedTables, s: Settings) -> Verdict:
 @claim("Fig. 5", "4.2. Performance comparison", "ConCov follows ConB.",
        "ConCov's immediate notification is second to ConB's.")
 def concov_follows_conb(t: PairedTables, s: Settings) -> Verdict:
-    """At t_d = 4000 s and Fig. 5's ranges, averaged over team sizes (paired): ConCov's
-    immediate notification minus mTSP's, CovB's and mTSP-ConB's lies above 0."""
+    """"ConCov follows ConB": at t_d = 4000 s and Fig. 5's ranges, averaged over team sizes
+    (paired; mTSP-ConB above N_r, where it is not mTSP): ConCov's immediate notification minus
+    mTSP's, CovB's and mTSP-ConB's lies above 0."""
     v = Verdict()
     _gaps(v, t, "immediate", ["concov"], ("mtsp", "covb", "mtsp-conb"), FIG5_RANGES, TD_LONG,
           _above())
@@ -95,8 +104,7 @@ def mtsp_immediate_lowest(t: PairedTables, s: Settings) -> Verdict:
     rc = RANGES[0]
     _gaps(v, t, "immediate", ["mtsp"], _others("mtsp"), [rc], TD_LONG, _below())
     per = {n: _stat(t, "immediate", "mtsp", n, rc, TD_LONG) for n in DRONES}
-    _averaged(v, per, lambda e: e.within(*_about(0.2)), f"{_rc(rc)}: mTSP's immediate "
-                                                        "notification")
+    _averaged(v, per, _about(0.2), f"{_rc(rc)}: mTSP's immediate notification")
     return v
 
 
@@ -104,16 +112,17 @@ def mtsp_immediate_lowest(t: PairedTables, s: Settings) -> Verdict:
        "For high r_c the performance of all schemes converges to 1; hence these results are "
        "omitted.", "At high r_c every scheme's immediate notification approaches 1.")
 def immediate_near_one_far(t: PairedTables, s: Settings) -> Verdict:
-    """A limit: at t_d = 4000 s and the largest r_c (2000 m), for every planner, the immediate
-    notification at the densest team (22 drones, the setting closest to the limit) lies above
-    0.9, and its value at 2000 m minus at 1000 m, averaged over team sizes (paired), lies
-    above 0 (it rises toward 1 with r_c; equal in every run is not testable)."""
+    """"For high r_c the performance of all schemes converges to 1", a limit: at t_d = 4000 s
+    and the largest r_c (2000 m), for every planner, the immediate notification at the densest
+    team (22 drones, the setting closest to the limit) lies above 0.9, and its value at 2000 m
+    minus at 1000 m, averaged over team sizes (paired), lies above 0 (it rises toward 1 with
+    r_c; equal in every run is not testable)."""
     v = Verdict()
     far, near = RANGES[-1], RANGES[-2]
     for p in PAPER_PLANNERS:
         e = _stat(t, "immediate", p, DRONES[-1], far, TD_LONG).estimate()
-        v.test(e.above(NEAR_ONE), f"{_rc(far)}, N_m = {DRONES[-1]}, {_label(p)}: immediate "
-                                  f"notification {e}")
+        _above(NEAR_ONE).test(v, e, f"{_rc(far)}, N_m = {DRONES[-1]}, {_label(p)}: immediate "
+                                    f"notification {e}")
         per = {n: _change(t, "immediate", p, (n, near, TD_LONG), (n, far, TD_LONG))
                for n in DRONES}
         _averaged(v, per, _above(), f"{_label(p)}: immediate notification at {far:g} m minus "
@@ -126,9 +135,10 @@ def immediate_near_one_far(t: PairedTables, s: Settings) -> Verdict:
        "traveled distances in terms of mission success.",
        "With t_d = 4000 s, mTSP's P_s is at least every other planner's.")
 def mtsp_keeps_success_with_delay(t: PairedTables, s: Settings) -> Verdict:
-    """At t_d = 4000 s (delay tolerated) and Fig. 5's ranges: mTSP's P_s minus each other
-    planner's, averaged over team sizes (paired; mTSP-ConB above N_r), lies above 0; equal in
-    every run (both always succeed) is not testable at this setting."""
+    """"If some notification delay can be tolerated": at t_d = 4000 s and Fig. 5's ranges,
+    "mTSP preserves its advantage [...] in terms of mission success": mTSP's P_s minus each
+    other planner's, averaged over team sizes (paired; mTSP-ConB above N_r), lies above 0;
+    equal in every run (both always succeed) is not testable at this setting."""
     v = Verdict()
     _gaps(v, t, "P_s", ["mtsp"], _others("mtsp"), FIG5_RANGES, TD_LONG, _above())
     return v

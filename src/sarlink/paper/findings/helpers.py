@@ -1,41 +1,66 @@
 """Shared by the claims' checks: the thresholds that give the paper's loose words a
 meaning (the conventions of :mod:`sarlink.paper.findings`), and the statistics and
-wording the checks have in common."""
+wording the checks have in common.
+
+A threshold the paper states ("higher than 90%", "at least 50%", "around 0.2") is a number
+here; one it does not state is a :class:`~sarlink.paper.evidence.Level` with the most lenient
+value a reader could defend from the words alone, so that the report can tell a
+contradiction the threshold decides from one no defensible threshold removes.
+"""
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
 
 from sarlink.config import Mission
 from sarlink.metrics import MEASURES
-from sarlink.paper.evidence import Estimate, Outcome, Verdict, average
+from sarlink.paper.evidence import Estimate, Level, Outcome, Verdict, average, exists
 from sarlink.paper.experiments import DRONES, RANGES
-from sarlink.paper.paired import PairedTables, Stat, mean_of
+from sarlink.paper.paired import PairedTables, Stat, mean_of, on_common
 from sarlink.planners import PAPER_PLANNERS, get_planner
 
-NEAR_ONE = 0.9
-"""A probability whose interval lies above this is "near 1" (the paper's "higher than 90%")."""
-ABOUT = 0.1
-"""What "about x" admits for a probability or share: x ± this, at most ± x / 2."""
-SMALL = 0.1
-"""A change of a probability smaller than this (ten points) is "small", "slight", "no help"."""
-HIGHLY_LIKELY = 0.75
-"""A probability above this (three times as likely as not) is "highly likely"."""
-LOW = 0.25
-"""Target reachability below this share of t_d (a quarter) is "low"."""
-FLAT = 2.0
-"""A plan time that changes by less than this factor over Fig. 1's team sizes (2 to 22, an
-11-fold team) "does not change significantly"; Fig. 1's log axis spans decades. A plan time
-this many times another's is "much higher"."""
-SMALL_MISS = 0.2
-"""The largest miss probability that is "small" (Fig. 7a)."""
+NEAR_ONE = Level('"near 1", "converges to 1"', 0.9, 0.8, "a probability above {0}")
+"""Where the paper states no number: 0.9, its own "higher than 90%" elsewhere; four in five
+is the least a reader would still call near 1."""
+ABOUT = Level('"about x", "around x"', 0.1, 0.15,
+              "x ± {0}, at most ± x / 2 and at most half the gap to a value the sentence sets "
+              "against x")
+"""What "about x" admits for a probability or share. Never more than x / 2 (so "about 10 %"
+excludes 0), nor half the distance to another value the same sentence contrasts with x
+("30% compared to 45%": neither admits the other)."""
+SMALL = Level('"small", "slight", "no help"', 0.1, 0.15, "a change of a probability under {0}")
+"""Ten points of a probability; fifteen is the most a reader would still call slight."""
+HIGHLY_LIKELY = Level('"highly likely"', 0.75, 0.6, "a probability above {0}")
+"""Three times as likely as not; 0.6 is the least that is still more than "likely"."""
+LOW = Level('"low" target reachability', 0.25, 0.35, "under {0} of t_d")
+"""A quarter of t_d; a third (0.35 with rounding) is the most still read as low."""
+FLAT = Level('"does not change significantly" (a plan time)', 2.0, 3.0,
+             "a change by a factor within 1/{0} to {0} from 2 to 22 drones")
+"""Fig. 1's log axis spans decades; an 11-fold team changing the time by less than 2 (3 at
+most) leaves it flat on that axis."""
+MUCH = Level('"much higher" (a plan time)', 2.0, 1.5, "more than {0} times")
+"""Twice; one and a half times is the least a reader would call much higher."""
+SMALL_MISS = Level('"not too high" (a miss probability)', 0.2, 0.1, "up to {0}")
+"""The miss probabilities at which detection must barely change: up to 0.2, or only 0.1."""
+VISIBLE = Level('a trend of a figure ("decreases monotonically", "decreases", "approaches")',
+                0.02, 0.05, "broken only by a step against it of more than {0} of the axis "
+                "(1 for a probability, t_d for a mission time)")
+"""A trend read off a figure is broken by a step against it that the figure shows: a 4-pt
+marker on a panel about 150 pt tall spans some 3 % of its axis, so a step under 2 % of the
+axis (40 s of a 2000 s mission-time axis, 0.02 of a probability) is hidden by the marker; a
+reader could argue for 5 %. Steps smaller than that are significant with 2000 paired runs but
+invisible, and do not break "monotonically"."""
 SMALL_TEAMS = (2, 4)
 """The "small N_m" / "lower number of drones": the two smallest teams."""
 NR = Mission().team.nr
 """mTSP-ConB's mTSP drones: up to this team size it flies exactly the mTSP plan."""
+V_M = Mission().team.speed
+"""The drones' speed, m/s."""
 HYBRID_SMALL_TEAMS = tuple(n for n in DRONES if n > NR)[:2]
-"""mTSP-ConB's smallest teams that are not mTSP's: its "lower number of drones"."""
+"""mTSP-ConB's smallest teams that are not mTSP's."""
 COVERAGE = ("mtsp", "covb")
 """The coverage-based schemes (Section 3.1)."""
 CONNECTIVITY = ("conb", "concov")
@@ -48,7 +73,35 @@ _MARK = {Outcome.HOLDS: "+", Outcome.CONTRADICTED: "−", Outcome.UNDECIDED: "?"
 _WHAT = {**{k: m.label for k, m in MEASURES.items()}, "detection_time": "mean detection time",
          "delay": "notification delay (t_notify − t_detect)"}
 
-Decide = Callable[[Estimate], Outcome]
+
+def _value(level: Level | float, lenient: bool) -> float:
+    """A threshold's number: a stated one as it is, a level at sarlink's or its lenient value."""
+    if isinstance(level, Level):
+        return level.lenient if lenient else level.value
+    return level
+
+
+@dataclass(frozen=True)
+class Decide:
+    """How a part is decided from its estimate: ``rule(estimate, lenient)``, where ``lenient``
+    puts each of ``levels`` (the unstated thresholds the rule uses) at its lenient value."""
+
+    rule: Callable[[Estimate, bool], Outcome]
+    levels: tuple[Level, ...] = ()
+
+    def __call__(self, e: Estimate) -> Outcome:
+        return self.rule(e, False)
+
+    def lenient(self, e: Estimate) -> Outcome | None:
+        return self.rule(e, True) if self.levels else None
+
+    def test(self, v: Verdict, e: Estimate, text: str) -> None:
+        """Record the part decided on ``e`` in ``v``."""
+        v.test(self(e), text, self.levels, self.lenient(e))
+
+
+def _levels(*xs: Level | float) -> tuple[Level, ...]:
+    return tuple(x for x in xs if isinstance(x, Level))
 
 
 def _label(planner: str) -> str:
@@ -63,12 +116,17 @@ def _others(planner: str) -> list[str]:
     return [p for p in PAPER_PLANNERS if p != planner]
 
 
-def _above(x: float = 0.0) -> Decide:
-    return lambda e: e.above(x)
+def _above(x: Level | float = 0.0) -> Decide:
+    return Decide(lambda e, lenient: e.above(_value(x, lenient)), _levels(x))
 
 
-def _below(x: float = 0.0) -> Decide:
-    return lambda e: e.below(x)
+def _below(x: Level | float = 0.0) -> Decide:
+    return Decide(lambda e, lenient: e.below(_value(x, lenient)), _levels(x))
+
+
+def _within(lo: Level | float, hi: Level | float) -> Decide:
+    return Decide(lambda e, lenient: e.within(_value(lo, lenient), _value(hi, lenient)),
+                  _levels(lo, hi))
 
 
 def _level(tests: int) -> float:
@@ -76,9 +134,15 @@ def _level(tests: int) -> float:
     return 1 - 0.05 / tests
 
 
+def _own(planner: str) -> list[int]:
+    """The team sizes at which ``planner`` is itself: mTSP-ConB only above N_r (up to N_r it
+    flies exactly mTSP's mission, so there it is no hybrid)."""
+    return [n for n in DRONES if planner != "mtsp-conb" or n > NR]
+
+
 def _sizes(a: str, b: str) -> list[int]:
-    """The team sizes at which ``a`` and ``b`` can differ (mTSP-ConB is mTSP up to N_r)."""
-    return [n for n in DRONES if {a, b} != {"mtsp", "mtsp-conb"} or n > NR]
+    """The team sizes at which ``a`` is compared with ``b``: where both are themselves."""
+    return [n for n in _own(a) if n in _own(b)]
 
 
 def _stat(t: PairedTables, measure: str, planner: str, drones: int, rc: float, td: float
@@ -90,10 +154,18 @@ def _picture(per: Mapping[int, Estimate], decide: Decide) -> str:
     return "per N_m: " + " ".join(f"{n}{_MARK[decide(e)]}" for n, e in per.items())
 
 
+def _grid_picture(per: Mapping[tuple[int, float], Stat], decide: Decide) -> str:
+    """The picture of :func:`_picture` for statistics at grid points (N_m, r_c), by range."""
+    ranges = dict.fromkeys(rc for _, rc in per)
+    return "per N_m: " + "; ".join(
+        f"{_rc(rc)}: " + " ".join(f"{n}{_MARK[decide(e.estimate())]}"
+                                  for (n, r), e in per.items() if r == rc) for rc in ranges)
+
+
 def _averaged(v: Verdict, per: Mapping[int, Stat], decide: Decide, what: str) -> Estimate:
     """Test ``decide`` on the average of ``per`` (a statistic per team size), showing each."""
     avg = mean_of(per.values()).estimate()
-    v.test(decide(avg), f"{what}, averaged over N_m: {avg}; "
+    decide.test(v, avg, f"{what}, averaged over N_m: {avg}; "
                         f"{_picture({n: s.estimate() for n, s in per.items()}, decide)}")
     return avg
 
@@ -124,8 +196,9 @@ def _change(t: PairedTables, measure: str, planner: str, start: tuple[int, float
 
 
 def _spread(t: PairedTables, measure: str, drones: int, rc: float, td: float) -> Stat:
-    """The largest minus the smallest planner's ``measure`` (the two picked by value)."""
-    stats = [_stat(t, measure, p, drones, rc, td) for p in PAPER_PLANNERS]
+    """The largest minus the smallest planner's ``measure`` (the two picked by value; a
+    measure over the runs notified over the runs every planner notifies)."""
+    stats = on_common([_stat(t, measure, p, drones, rc, td) for p in PAPER_PLANNERS])
     if any(math.isnan(s.value) for s in stats):
         return Stat(math.nan, 0 * stats[0].influence, stats[0].digits, contrast=True)
     ordered = sorted(stats, key=lambda s: s.value)
@@ -149,16 +222,20 @@ def _every_run(v: Verdict, t: PairedTables, event: str, planner: str, td: float)
 def _half(t: PairedTables, v: Verdict, fast: Sequence[str], slow: Sequence[str],
           rc: float, td: float, sizes: Mapping[str, Sequence[int]]) -> None:
     """Test at each team size of ``sizes[f]``: half of each ``slow`` planner's mission time
-    minus ``f``'s lies above 0."""
+    minus ``f``'s, over the runs both notify, lies above 0 (mTSP-ConB only where it is
+    itself)."""
     for f in fast:
         for n in sizes[f]:
             mine = _stat(t, "mission_time", f, n, rc, td)
             for p in slow:
-                other = _stat(t, "mission_time", p, n, rc, td)
-                e = (other.scaled(0.5) - mine).estimate()
-                v.test(e.above(), f"{_rc(rc)}, N_m = {n}, t_d = {td:g} s: half of "
-                                  f"{_label(p)}'s mission time {other.estimate().scaled(0.5)} s "
-                                  f"minus {_label(f)}'s {mine.estimate()} s: {e} s")
+                if n not in _sizes(f, p):
+                    continue
+                other, me = on_common([_stat(t, "mission_time", p, n, rc, td), mine])
+                e = (other.scaled(0.5) - me).estimate()
+                v.test(e.above(), f"{_rc(rc)}, N_m = {n}, t_d = {td:g} s, over the runs both "
+                                  f"notify: half of {_label(p)}'s mission time "
+                                  f"{other.estimate().scaled(0.5)} s minus {_label(f)}'s "
+                                  f"{me.estimate()} s: {e} s")
 
 
 def _plan_ratio(t: PairedTables, a: str, b: str) -> Estimate:
@@ -168,7 +245,70 @@ def _plan_ratio(t: PairedTables, a: str, b: str) -> Estimate:
     return average(times.log_ratio(a, b, n) for n in times.team_sizes()).mapped(math.exp, 2)
 
 
-def _about(level: float) -> tuple[float, float]:
-    """What "about ``level``" admits (see the module docstring)."""
-    half = min(ABOUT, level / 2)
-    return level - half, level + half
+def _about_band(x: float, lenient: bool, versus: Iterable[float] = ()) -> tuple[float, float]:
+    """What "about ``x``" admits (:data:`ABOUT`), apart from the values ``versus``."""
+    half = min(_value(ABOUT, lenient), x / 2, *(abs(x - y) / 2 for y in versus))
+    return x - half, x + half
+
+
+def _about(x: float, versus: Iterable[float] = ()) -> Decide:
+    """Is the estimate "about ``x``" (the sentence setting it against ``versus``)."""
+    others = tuple(versus)
+    return Decide(lambda e, lenient: e.within(*_about_band(x, lenient, others)), (ABOUT,))
+
+
+def _against(points: Mapping[float, Stat], sign: int, scale: float, lenient: bool
+             ) -> list[tuple[float, float]]:
+    """The steps between neighbouring ``points`` (in order) that go against a trend of
+    direction ``sign`` (+1 rising, −1 falling) by more than :data:`VISIBLE` × ``scale`` (the
+    figure's axis): their interval lies beyond it."""
+    tolerance = _value(VISIBLE, lenient) * scale
+    steps = {(a, b): (points[b] - points[a]).estimate() for a, b in itertools.pairwise(points)}
+    return [ab for ab, e in steps.items() if (e.lo if sign < 0 else -e.hi) > tolerance]
+
+
+def _trend(v: Verdict, points: Mapping[float, Stat], sign: int, scale: float, text: str,
+           axis: str, unit: str = "") -> None:
+    """A trend of a figure's curve (``points`` in order along the axis ``axis``, a format for
+    a key): contradicted if a step goes against it visibly (:func:`_against`); otherwise
+    holds if the change from the first point to the last lies on the side of ``sign``,
+    contradicted if on the other."""
+    keys = list(points)
+    first, last = on_common([points[keys[0]], points[keys[-1]]])
+    overall = (last - first).estimate()
+    decide = _above() if sign > 0 else _below()
+    against = _against(points, sign, scale, lenient=False)
+    lenient = (Outcome.CONTRADICTED if _against(points, sign, scale, lenient=True)
+               else decide(overall))
+    steps = ", ".join(f"{axis.format(a)} to {axis.format(b)}" for a, b in against)
+    v.test(Outcome.CONTRADICTED if against else decide(overall),
+           f"{text}: {first.estimate()}{unit} at {axis.format(keys[0])}, "
+           f"{last.estimate()}{unit} at {axis.format(keys[-1])}"
+           + (" (over the runs notified at both)" if first.over else "")
+           + f", change {overall}{unit}"
+           + (f"; {'rises' if sign < 0 else 'falls'} by more than {VISIBLE.value:g} of the "
+              f"axis ({VISIBLE.value * scale:g}{unit}) from {steps}" if against else ""),
+           (VISIBLE,), lenient)
+
+
+def _exists_part(v: Verdict, outcomes: Mapping[str, Outcome], text: str) -> None:
+    """An existence part ("at some ..."): :func:`~sarlink.paper.evidence.exists` over the
+    candidates' ``outcomes`` (by name), with how many came out each way."""
+    named = {o: [k for k, x in outcomes.items() if x is o] for o in Outcome}
+    count = {o: len(k) for o, k in named.items()}
+    v.test(exists(outcomes.values()),
+           f"{text}: at {count[Outcome.HOLDS]} of {len(outcomes)}"
+           + (f", e.g. {named[Outcome.HOLDS][0]}" if named[Outcome.HOLDS] else "")
+           + f"; significantly not at {count[Outcome.CONTRADICTED]}, undecided at "
+             f"{count[Outcome.UNDECIDED]}, equal in every run at {count[Outcome.NOT_TESTABLE]}")
+
+
+def _jointly(outcomes: Iterable[Outcome]) -> Outcome:
+    """One candidate of an existence claim that asks several comparisons at once ("above
+    both"): contradicted if one is, not testable if one is equal in every run (it cannot show
+    the candidate), holds if all hold, undecided otherwise."""
+    found = set(outcomes)
+    for o in (Outcome.CONTRADICTED, Outcome.NOT_TESTABLE, Outcome.UNDECIDED):
+        if o in found:
+            return o
+    return Outcome.HOLDS
