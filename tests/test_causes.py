@@ -9,8 +9,9 @@ import pandas as pd
 
 from sarlink.config import DEFAULT_READING
 from sarlink.paper.causes import Cause, contradictions, first_line
-from sarlink.paper.claim import Finding, tally
-from sarlink.paper.evidence import Level, Outcome, Part
+from sarlink.paper.claim import Claim, Finding, Settings, tally
+from sarlink.paper.evidence import Level, Outcome, Part, Verdict
+from sarlink.paper.paired import PairedTables
 from sarlink.paper.report import Sensitivity, write_report
 
 HOLDS, CONTRADICTED, UNDECIDED, UNTESTABLE = (Outcome.HOLDS, Outcome.CONTRADICTED,
@@ -108,3 +109,17 @@ def test_the_report_opens_with_the_tally_by_cause(tmp_path: Path) -> None:
         ("claim g", "decided by a level the paper does not state")]
     assert rows[0][3] == "holds under literal, isolated=home |"
     assert rows[2][3] == "ConB's drones never form a chain. |"
+
+
+def test_a_mechanism_is_given_only_for_the_runs_of_the_reading_it_was_read_off() -> None:
+    """A mechanism describes one reading's runs: decided under another reading, the claim
+    carries none (the report then says it is not written yet)."""
+    def check(tables: PairedTables, settings: Settings) -> Verdict:
+        verdict = Verdict()
+        verdict.test(CONTRADICTED, "a part")
+        return verdict
+
+    made = Claim("Fig. 5", "4.2", "a sentence", "a claim", (), check,
+                 {"sarlink-3": "ConB's drones fly diameters through the BS."})
+    found = {r: made({}, Settings(reading=r)).mechanism for r in ("sarlink-3", "sarlink-4")}
+    assert found == {"sarlink-3": "ConB's drones fly diameters through the BS.", "sarlink-4": ""}

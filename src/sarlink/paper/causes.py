@@ -10,7 +10,7 @@ whatever made each contradiction. Each is put under the first of these that appl
   Level`), no part of it is contradicted;
 - it is a **model-level disagreement**: it holds under no reading decided and no defensible
   level removes it; the mechanism is one sentence written beside the claim
-  (:attr:`~sarlink.paper.claim.Claim.mechanism`).
+  (:attr:`~sarlink.paper.claim.Claim.mechanisms`).
 
 The first two are computed from the runs (the claims decided under every preset and every
 single change, and each part's outcome at the lenient levels); only the mechanism is written

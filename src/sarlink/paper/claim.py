@@ -7,17 +7,18 @@ criterion (the report quotes it). The check tests one or more parts, each *holds
 *contradicted*, *undecided at this sample size* or *not testable at this setting*
 (:class:`~sarlink.paper.evidence.Outcome`); the claim's outcome is that of its parts together
 (:func:`~sarlink.paper.evidence.worst`). A claim the runs contradict under every reading
-carries the mechanism of the disagreement, written beside it (:attr:`Claim.mechanism`); the
+carries the mechanism of the disagreement, written beside it (:attr:`Claim.mechanisms`); the
 report shows it where :mod:`sarlink.paper.causes` finds the contradiction model-level.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import pandas as pd
 
+from sarlink.config import DEFAULT_READING
 from sarlink.paper.evidence import Outcome, Part, Verdict, worst
 from sarlink.paper.experiments import TD_FIG3
 from sarlink.paper.paired import PairedTables
@@ -35,6 +36,9 @@ class Settings:
     """Fig. 3's target duration, s, at which the claims about Fig. 3's P_s against N_m are
     read: the paper does not state it (:data:`sarlink.paper.experiments.TD_FIG3`, 2000 s;
     1000 and 4000 s are the other candidates the runs hold)."""
+    reading: str = DEFAULT_READING
+    """The reading whose runs are decided: a claim's mechanism is written for the runs of
+    one reading (:attr:`Claim.mechanisms`)."""
 
 
 DEFAULT_SETTINGS = Settings()
@@ -62,7 +66,7 @@ class Finding:
     name: str = ""
     """The claim's check's name, the same under every reading."""
     mechanism: str = ""
-    """Why the model disagrees, where no reading makes it hold (:attr:`Claim.mechanism`)."""
+    """Why the model disagrees, where no reading makes it hold (:attr:`Claim.mechanisms`)."""
 
     @property
     def lenient(self) -> Outcome:
@@ -97,9 +101,10 @@ class Claim:
     """What is tested, in a few words."""
     tables: tuple[str, ...]
     check: Check
-    mechanism: str = ""
-    """One sentence: what in the model makes the claim fail under every reading (empty where
-    none is known to)."""
+    mechanisms: Mapping[str, str] = field(default_factory=dict)
+    """By reading: one sentence, what in that reading's runs makes the claim fail under every
+    reading (none where none is known to: a mechanism read off one reading's runs need not
+    hold for another's)."""
 
     @property
     def name(self) -> str:
@@ -119,7 +124,8 @@ class Claim:
         verdict = self.check(wrapped, settings)
         return Finding(self.figure, self.text, worst(p.outcome for p in verdict.parts),
                        tuple(verdict.parts), tuple(verdict.notes), self.criterion,
-                       self.section, self.sentence, self.name, self.mechanism)
+                       self.section, self.sentence, self.name,
+                       self.mechanisms.get(settings.reading, ""))
 
 
 CLAIMS: list[Claim] = []
@@ -127,12 +133,13 @@ CLAIMS: list[Claim] = []
 
 
 def claim(figure: str, section: str, sentence: str, text: str,
-          tables: tuple[str, ...] = ("main_runs",), mechanism: str = ""
+          tables: tuple[str, ...] = ("main_runs",), mechanism: Mapping[str, str] | None = None
           ) -> Callable[[Check], Claim]:
     """Register the decorated check as a claim about ``figure``, quoting ``sentence``, with
-    the ``mechanism`` of its disagreement where the model contradicts it under every reading."""
+    the ``mechanism`` of its disagreement, by reading, where the model contradicts it under
+    every reading."""
     def register(check: Check) -> Claim:
-        made = Claim(figure, section, sentence, text, tables, check, mechanism)
+        made = Claim(figure, section, sentence, text, tables, check, dict(mechanism or {}))
         CLAIMS.append(made)
         return made
     return register

@@ -201,7 +201,7 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
     if runs < 1:
         raise ConfigError(f"runs must be at least 1, got {runs}")
     chosen = get_reading(reading)
-    settings = Settings(td_fig3=chosen.td_fig3)
+    settings = Settings(td_fig3=chosen.td_fig3, reading=chosen.name)
     needed = [e for e in EXPERIMENTS.values() if set(e.figures) & set(numbers)]
     tables, stages = reading_tables(out / "runs", needed, runs, chosen.choices,
                                     workers=workers, scheduler=scheduler, progress=progress)

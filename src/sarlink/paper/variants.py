@@ -155,7 +155,7 @@ def preset_findings(reading: Reading, base: dict[str, pd.DataFrame], runs_folder
                                 workers=workers, scheduler=scheduler, progress=progress)
         stages.append(replace(stage, name=f"{stage.name} (the other presets)"))
     tables = {r.name: {**base, **mine} for r, mine in zip(others, changed, strict=True)}
-    return {r.name: check_all(tables.get(r.name, base), Settings(td_fig3=r.td_fig3))
+    return {r.name: check_all(tables.get(r.name, base), Settings(td_fig3=r.td_fig3, reading=r.name))
             for r in READINGS.values()}, stages
 
 

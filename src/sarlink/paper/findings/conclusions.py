@@ -48,10 +48,10 @@ def stringent_resources_matter_most(t: PairedTables, s: Settings) -> Verdict:
        "times due to slower spreading than the coverage-based schemes.",
        "ConB and ConCov notify at detection more and keep the target reachable longer than "
        "mTSP and CovB, but detect later.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "At r_c = 2000 m ConCov's drones are in reach of the BS almost everywhere, where its "
        "connectivity term keeps the heading, so it searches as CovB does and detects no "
-       "later."))
+       "later.")})
 def connectivity_aware_tradeoff(t: PairedTables, s: Settings) -> Verdict:
     """For ConB and ConCov against mTSP and CovB, averaged over team sizes (paired): at t_d =
     4000 s and Fig. 5's ranges, the immediate notification ("simultaneous detection and

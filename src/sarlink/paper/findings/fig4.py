@@ -56,9 +56,9 @@ def mission_times_converge(t: PairedTables, s: Settings) -> Verdict:
 @claim("Fig. 4", "4.2. Performance comparison",
        "However, the mission time of ConB is less than half of that of the other schemes for "
        "small N_m.", "ConB's mission time is under half of the others' for small N_m.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "On the same targets ConB is no faster than mTSP and CovB: it notifies only the "
-       "targets near the BS, which they notify as soon."))
+       "targets near the BS, which they notify as soon.")})
 def conb_mission_time(t: PairedTables, s: Settings) -> Verdict:
     """"the mission time of ConB is less than half of that of the other schemes for small N_m":
     at t_d = 4000 s, for every r_c and N_m in {2, 4}, and against each other planner P
@@ -74,13 +74,13 @@ def conb_mission_time(t: PairedTables, s: Settings) -> Verdict:
        "Even when connectivity is added to the decision, total mission time is still higher "
        "for ConCov and mTSP-Con due to the time spent searching.",
        "ConCov's and mTSP-ConB's mission times stay above ConB's.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "ConB's drones leave the BS together at one speed and reach r_c together; with the BS "
        "as the only routed neighbour Eq. 9's two unit vectors cancel and they turn back, so "
        "they fly diameters through the BS and never leave the disc of radius r_c; ConCov's "
        "drones, repelling each other, reach the targets near the BS (the only ones ConB "
        "notifies) sooner than ConB's drones passing back and forth, so on the same targets "
-       "ConCov's mission time is the shorter."))
+       "ConCov's mission time is the shorter.")})
 def hybrid_times_above_conb(t: PairedTables, s: Settings) -> Verdict:
     """"total mission time is still higher for ConCov and mTSP-Con": at t_d = 4000 s and every
     r_c, for ConCov and for mTSP-ConB (above N_r, where it is a hybrid): its mean mission time
@@ -156,12 +156,12 @@ def concov_notification_share(t: PairedTables, s: Settings) -> Verdict:
 @claim("Fig. 4", "4.2. Performance comparison",
        "however, still much lower than ConB (10% of total mission time for higher r_c)",
        "At the larger ranges notification takes about 10 % of ConB's mission.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "ConB's drones leave the BS together at one speed and reach r_c together; with the BS "
        "as the only routed neighbour Eq. 9's two unit vectors cancel and they turn back, so "
        "they fly diameters through the BS and never leave the disc of radius r_c, so every "
        "detection is in reach and notified at once: notification takes no share of ConB's "
-       "mission."))
+       "mission.")})
 def conb_notification_share(t: PairedTables, s: Settings) -> Verdict:
     """"10% of total mission time for higher r_c": at t_d = 4000 s and r_c = 1000 and 2000 m,
     ConB's notification share of the mission time at its largest over the team sizes (as for
@@ -221,10 +221,10 @@ def detection_phase_has_a_minimum(t: PairedTables, s: Settings) -> Verdict:
 @claim("Fig. 4", "4.2. Performance comparison",
        "While omitted here, similar trends have been observed for shorter t_d as well.",
        "At t_d = 2000 s mission times converge, fall with N_m, and ConB's is under half.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "Within t_d = 2000 s the 2-drone mTSP plan notifies only targets its two tours pass "
        "early, and the 4-drone plan, its tours laid out afresh, reaches some of those same "
-       "targets later: over the same targets the mission time rises from 2 to 4 drones."))
+       "targets later: over the same targets the mission time rises from 2 to 4 drones.")})
 def fig4_trends_at_shorter_td(t: PairedTables, s: Settings) -> Verdict:
     """"similar trends have been observed for shorter t_d as well": at t_d = 2000 s the
     criteria of Fig. 4a's three trends: the spread of the planners' mean mission times shrinks

@@ -134,10 +134,10 @@ def _shadowing_rc(t: PairedTables) -> float:
        "Observe that the performance trends are similar to those of the simplified "
        "communication model", "Under shadowing the orders of Fig. 5 remain.",
        ("main_runs", "shadowing_runs"),
-       mechanism=(
+       mechanism={"sarlink-3": (
        "Shadowing's links beyond r_c let mTSP-ConB's ConB drones, which stay within r_c of "
        "the BS, relay detections from farther out, so mTSP-ConB gains more than mTSP and "
-       "passes it."))
+       "passes it.")})
 def shadowing_keeps_trends(t: PairedTables, s: Settings) -> Verdict:
     """"the performance trends are similar to those of the simplified communication model": at
     Fig. 7b's r_c (1000 m) and t_d = 4000 s, immediate notification averaged over team sizes
@@ -167,10 +167,10 @@ def shadowing_keeps_trends(t: PairedTables, s: Settings) -> Verdict:
        "whereas the notification probability is improved slightly for mTSP schemes",
        "Shadowing raises mTSP's and mTSP-ConB's immediate notification slightly.",
        ("main_runs", "shadowing_runs"),
-       mechanism=(
+       mechanism={"sarlink-3": (
        "Shadowing's fades let links reach well beyond r_c (the threshold puts the median "
        "link range at r_c, so the mean link area exceeds the disc's), and the mTSP schemes, "
-       "whose detections are often out of reach of the disc, gain far more than slightly."))
+       "whose detections are often out of reach of the disc, gain far more than slightly.")})
 def shadowing_helps_mtsp_slightly(t: PairedTables, s: Settings) -> Verdict:
     """"the notification probability is improved slightly for mTSP schemes": at Fig. 7b's r_c
     and t_d = 4000 s, for mTSP and mTSP-ConB (above N_r, where it is not mTSP): the immediate

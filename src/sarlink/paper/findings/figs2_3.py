@@ -99,12 +99,12 @@ def mtsp_two_drones(t: PairedTables, s: Settings) -> Verdict:
 @claim("Figs. 2–3", "4.2. Performance comparison",
        "Due to the constraints on connectivity, adding more drones does not help ConB",
        "More drones do not help ConB.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "ConB's drones leave the BS together at one speed and reach r_c together; with the BS "
        "as the only routed neighbour Eq. 9's two unit vectors cancel and they turn back, so "
        "they fly diameters through the BS and never leave the disc of radius r_c: more "
        "drones sweep that disc sooner, and at r_c = 1000 and 2000 m the disc and its sensing "
-       "rim hold much of the area, so ConB's P_s grows with N_m."))
+       "rim hold much of the area, so ConB's P_s grows with N_m.")})
 def drones_do_not_help_conb(t: PairedTables, s: Settings) -> Verdict:
     """"adding more drones does not help ConB": at Fig. 3's t_d and every r_c, ConB's gain in
     P_s from N_m = 2 to 22 (paired) lies below 0.1."""
@@ -223,10 +223,10 @@ def _dominated(t: PairedTables, planners: tuple[str, str]) -> list[tuple[int, fl
        "better than ConB, they might still require more resources than mTSP and CovB, "
        "especially when the detection task dominates the mission times.",
        "Where detection dominates, the hybrids trail mTSP and CovB.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "Where detection dominates, mTSP-ConB succeeds in the same runs as mTSP by Fig. 3's "
        "t_d and no later than CovB: its N_r = 6 tour drones search as mTSP's do and its "
-       "other drones cost it no search there."))
+       "other drones cost it no search there.")})
 def hybrids_trail_coverage(t: PairedTables, s: Settings) -> Verdict:
     """"when the detection task dominates the mission times": at the grid points (N_m, r_c)
     where the search share of the mission time (Fig. 4b, t_d = 4000 s) of both compared

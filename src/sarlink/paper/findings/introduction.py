@@ -31,11 +31,11 @@ from sarlink.paper.paired import PairedTables
 @claim("Abstract", "Abstract",
        "even though the coverage path-planning leads to lower search times",
        "Coverage planners detect sooner than those that add connectivity.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "mTSP-ConB searches with N_r = 6 drones flying an mTSP plan, which detect sooner than "
        "CovB's N_m drones spreading by repulsion; and at r_c = 2000 m ConCov's drones are in "
        "reach of the BS almost everywhere, where its connectivity term keeps the heading, so "
-       "it searches as CovB does and detects no later."))
+       "it searches as CovB does and detects no later.")})
 def coverage_searches_faster(t: PairedTables, s: Settings) -> Verdict:
     """"the coverage path-planning leads to lower search times": at t_d = 1000 s (a search not
     yet finished) and every r_c: for mTSP and for CovB against each of ConB, ConCov and
@@ -51,11 +51,11 @@ def coverage_searches_faster(t: PairedTables, s: Settings) -> Verdict:
        "50% better mission times for small communication ranges and lower number of drones",
        "ConB and ConCov need at most half the mission time of mTSP and CovB at small r_c and "
        "few drones.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "On the same targets ConB is no faster than mTSP and CovB: it notifies only the "
        "targets near the BS, which they notify as soon; and ConCov, whose connectivity term "
        "slows its search at r_c = 500 m, notifies the targets it shares with them only a "
-       "little sooner than they do."))
+       "little sooner than they do.")})
 def connectivity_halves_mission_time(t: PairedTables, s: Settings) -> Verdict:
     """"at least 50% better mission times for small communication ranges and lower number of
     drones": at the smallest r_c (500 m), t_d = 4000 s and N_m = 2 and 4, for the "schemes that
@@ -94,11 +94,11 @@ def connectivity_improves_with_drones(t: PairedTables, s: Settings) -> Verdict:
        "notification as soon as the target is detected",
        "At small r_c and few drones ConB and ConCov need at most half the mission time of "
        "mTSP and CovB, and notify at detection more often.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "On the same targets ConB is no faster than mTSP and CovB: it notifies only the "
        "targets near the BS, which they notify as soon; and ConCov, whose connectivity term "
        "slows its search at r_c = 500 m, notifies the targets it shares with them only a "
-       "little sooner than they do."))
+       "little sooner than they do.")})
 def stringent_connectivity_wins(t: PairedTables, s: Settings) -> Verdict:
     """"if the communication range and number of drones are low": at r_c = 500 m, t_d = 4000 s,
     N_m = 2 and 4, for ConB and ConCov against mTSP and CovB (paired, per team size): "by at

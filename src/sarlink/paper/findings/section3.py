@@ -58,13 +58,13 @@ def mtsp_guarantees_coverage(t: PairedTables, s: Settings) -> Verdict:
        "native mTSP and CovB at the cost of search time.",
        "mTSP-ConB and ConCov notify at detection more often than mTSP and CovB, and detect "
        "later.",
-       mechanism=(
+       mechanism={"sarlink-3": (
        "mTSP-ConB's detections are made by its N_r = 6 tour drones far out on long tours, "
        "while its ConB drones stay within r_c of the BS instead of forming chains, so fewer "
        "are in reach than mTSP's, whose N_m drones spread and relay for each other; and at "
        "r_c = 2000 m ConCov's drones are in reach of the BS almost everywhere, where its "
        "connectivity term keeps the heading, so it searches as CovB does and detects no "
-       "later."))
+       "later.")})
 def hybrids_trade_search_for_notification(t: PairedTables, s: Settings) -> Verdict:
     """For mTSP-ConB against mTSP (above N_r) and ConCov against CovB, averaged over team
     sizes: "advantages regarding notification performance", at t_d = 4000 s and Fig. 5's ranges
