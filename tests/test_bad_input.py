@@ -289,5 +289,6 @@ def test_a_full_disk_mid_sweep_keeps_what_was_finished(workspace: Path, tmp_path
     monkeypatch.setattr(storage.pq, "write_table", real)
     assert runner.invoke(app, args).exit_code == 0
     clean = tmp_path / "clean"
-    assert runner.invoke(app, ["sweep", str(toml), "--out", str(clean), "-q"]).exit_code == 0
+    assert runner.invoke(app, ["sweep", str(toml), "--out", str(clean), "--workers", "1",
+                               "-q"]).exit_code == 0
     pd.testing.assert_frame_equal(load(out), load(clean))

@@ -17,7 +17,7 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from phase_inputs import BS, component, members, node_arrays, pack, padded, params, words
-from sarlink.engine.codes import Prediction
+from sarlink.engine.codes import ConbFallback, Prediction
 from sarlink.engine.geometry import FAR
 from sarlink.engine.graph import bs_component, links
 from sarlink.engine.observation import Observation
@@ -362,7 +362,9 @@ def test_conb_headings_are_eqs_9_to_11(
     heading or (``isolated = home``) the BS."""
     xy, angles, modes = team
     n = len(angles)
-    p = params(rc=rc, contacts=contacts, isolated=isolated)
+    # a vanishing Eq. 9 turns to θ_ij (conb_fallback = contact): one direction to check
+    p = params(rc=rc, contacts=contacts, isolated=isolated,
+               conb_fallback=int(ConbFallback.CONTACT))
     neighbours = [{b for b in range(n + 2) if b != a and math.dist(xy[a], xy[b]) <= rc}
                   for a in range(n + 2)]
     routed_next = {j for j in range(n + 1) if routed[j]}
@@ -373,7 +375,7 @@ def test_conb_headings_are_eqs_9_to_11(
     deciding = np.ones(n, dtype=np.bool_)
     conb_headings(deciding, px, py, hx, hy, np.array(modes, dtype=np.int8),
                   pack(neighbours, words(n + 2)), pack([routed_next], words(n + 2))[0], p, rc,
-                  no_term, vx, vy)
+                  no_term, vx, vy, np.random.default_rng(0))
     for i in range(n):
         if None not in want[i]:
             assert any(_same_direction((vx[i], vy[i]), w) for w in want[i]), (i, want[i])
@@ -382,7 +384,9 @@ def test_conb_headings_are_eqs_9_to_11(
 def _one_decision(xy: list[tuple[float, float]], angles: list[float], modes: list[int],
                   routed_next: set[int], p: Params, no_term: bool = False,
                   deciding: tuple[bool, ...] | None = None) -> list[tuple[float, float]]:
-    """``conb_headings`` for hand-placed drones, with links within r_c."""
+    """``conb_headings`` for hand-placed drones, with links within r_c, a vanishing Eq. 9
+    turning to θ_ij (``conb_fallback = contact``: one direction, worked out by hand)."""
+    p = p._replace(conb_fallback=int(ConbFallback.CONTACT))
     n = len(angles)
     neighbours = [{b for b in range(n + 2) if b != a and math.dist(xy[a], xy[b]) <= p.rc}
                   for a in range(n + 2)]
@@ -392,7 +396,7 @@ def _one_decision(xy: list[tuple[float, float]], angles: list[float], modes: lis
     who = np.array(deciding if deciding is not None else [True] * n)
     conb_headings(who, px, py, hx, hy, np.array(modes, dtype=np.int8),
                   pack(neighbours, words(n + 2)), pack([routed_next], words(n + 2))[0], p,
-                  p.rc, no_term, vx, vy)
+                  p.rc, no_term, vx, vy, np.random.default_rng(0))
     return list(zip(vx.tolist(), vy.tolist(), strict=True))
 
 

@@ -74,7 +74,7 @@ def test_a_rule_draws_from_its_own_stream_of_seed_and_run() -> None:
     """A random walk's first headings are the first draws of the run's rule stream (numpy's
     own generator from ``(seed, run)``); the run is the same drawn again, another run not."""
     register_planner(RANDOM_WALK)
-    mission = Mission.build(planner="random-walk", drones=4, horizon=300.0)
+    mission = Mission.build(planner="random-walk", drones=4, horizon=300.0, turns="exact")
     first = simulate(mission, seed=5, run=2, trajectory=True)
     headings = first.trajectory.headings
     k = next(k for k in range(1, len(headings)) if not np.array_equal(headings[k],

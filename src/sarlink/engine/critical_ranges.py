@@ -224,18 +224,26 @@ def _observe(k: int, last: int, positions: np.ndarray, px: np.ndarray, py: np.nd
     return sensing.sense(px, py, k, p, in_range, pass_start, sensed, rng_look)
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def _parked(p: Params, mode: int) -> bool:
+    """Whether a drone in ``mode`` is part of the BS (``readings.parked = base``)."""
+    return p.parked == PARKED_BASE and mode == LANDED
+
+
 @njit(cache=True, error_model="numpy")
 def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
-             end: int, rng_shadow: np.random.Generator, rng_look: np.random.Generator,
-             cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
+             modes: np.ndarray, end: int, rng_shadow: np.random.Generator,
+             rng_look: np.random.Generator, cp_steps: np.ndarray, r2s: np.ndarray) -> Critical:
     """The critical ranges of steps ``0 .. end`` of a range-free flight (its notification
     staircase, from every step's minimum spanning tree), and its records at every squared
     range of ``r2s``, summed step by step in the kernel's order.
 
-    ``positions[k]`` are the drones' positions at step ``k`` as the kernel traced them
-    (``Params.trace``); a team that settled has fewer rows, and its last holds for the later
-    steps. ``rng_shadow`` and ``rng_look`` are fresh copies of the run's streams; ``unit`` is
-    ``p`` with ``r_c = 1``, with which the log-normal radio's ``update`` draws the bare fades.
+    ``positions[k]`` and ``modes[k]`` are the drones' positions and modes at step ``k`` as
+    the kernel traced them (``Params.trace``); a team that settled has fewer rows, and its
+    last holds for the later steps. With ``readings.parked = base`` a parked drone is part of
+    the BS (:func:`sarlink.engine.graph.reachability`). ``rng_shadow`` and ``rng_look`` are
+    fresh copies of the run's streams; ``unit`` is ``p`` with ``r_c = 1``, with which the
+    log-normal radio's ``update`` draws the bare fades.
     """
     n = positions.shape[1]
     last = positions.shape[0] - 1
@@ -267,12 +275,14 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
                          in_range, pass_start, sensed, rng_look)
         if det_step < 0 and first >= 0:
             det_step, detector = k, first
+        row = min(k, last)
         if k <= last or shadowed:  # a settled team's graph is that of its last traced step
             _keys(px, py, pz, fade, shadowed, key)
             _tree(key, n, order, parent, up_key, best, joined, routed)
             reach_key = key[n + 1, n] if p.reachability == _DIRECT else _INF
             for i in range(n):
-                reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
+                if p.reachability == _DIRECT or not _parked(p, modes[row, i]):
+                    reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
         if det_step >= 0:
             # knowledge: sources are the drones that sensed (key 0) or knew (their key); a
             # key at or above the BS's running minimum no longer matters (notified there)
@@ -302,7 +312,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             reachable[r] = reach_key <= r2
             connected[r] = 0
             for i in range(n):
-                if routed[i] <= r2:
+                if routed[i] <= r2 and not _parked(p, modes[row, i]):
                     connected[r] += 1
         _close_step(k, p, det_step, notified, going, reachable, connected, acc_reach,
                     acc_conn, n)

@@ -151,7 +151,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
         elif p.trace:
-            records.record_positions(k, px, py, traj_pos)
+            records.record_positions(k, px, py, mode, traj_pos, traj_mode)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
                 p.stop == STOP_NOTIFIED and t_not >= 0.0) or (
                 SCANS_RANGES and scanning and not sc.going.any()):

@@ -74,10 +74,11 @@ def no_ranges(cp_steps: np.ndarray) -> AtRanges:
 @njit(cache=True, inline="always", error_model="numpy")
 def new_track(steps: int, n: int, nw: int, position_steps: int = 0) -> Track:
     """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row), and
-    for the positions of ``position_steps`` steps if more (a traced run)."""
-    return Track(np.empty((max(steps, position_steps), n, 2)), np.empty((steps, n)),
+    for the positions and modes of ``position_steps`` steps if more (a traced run)."""
+    traced = max(steps, position_steps)
+    return Track(np.empty((traced, n, 2)), np.empty((steps, n)),
                  np.empty((steps, n), dtype=np.bool_), np.empty((steps, n), dtype=np.bool_),
-                 np.empty((steps, n), dtype=np.int8),
+                 np.empty((traced, n), dtype=np.int8),
                  np.empty((steps, n + 2, nw), dtype=np.uint64))
 
 
@@ -102,11 +103,14 @@ def record_step(k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.n
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def record_positions(k: int, px: np.ndarray, py: np.ndarray, positions: np.ndarray) -> None:
-    """Store the drones' positions of step ``k`` (a traced run, see ``Params.trace``)."""
+def record_positions(k: int, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
+                     positions: np.ndarray, track_mode: np.ndarray) -> None:
+    """Store the drones' positions and modes of step ``k`` (a traced run, see
+    ``Params.trace``: the modes say which drones are parked at the BS)."""
     for i in range(positions.shape[1]):
         positions[k, i, 0] = px[i]
         positions[k, i, 1] = py[i]
+        track_mode[k, i] = mode[i]
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -232,7 +232,7 @@ class Prepared:
         stopped = p.stop == STOP_DETECTED and rec.t_detect >= 0.0
         positions = rec.track.positions
         crit = critical(p, p._replace(rc=1.0), float(scenario.target[0]),
-                        float(scenario.target[1]), positions,
+                        float(scenario.target[1]), positions, rec.track.mode,
                         positions.shape[0] - 1 if stopped else p.n_steps, shadow, look,
                         self.cp_steps, np.array([rc * rc for rc in rcs]))
         return scenario, rec, crit
