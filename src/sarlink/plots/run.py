@@ -86,16 +86,19 @@ def plot_network(result: RunResult, mission: Mission, ax: plt.Axes | None = None
     if ax is None:
         _, ax = plt.subplots(figsize=(7, 2.5), layout="constrained")
     t = result.checkpoints
-    ax.step(t, result.depth, where="post", color="tab:green", label="hops from the BS (depth)")
+    # snapshots at the checkpoints: each drawn about its checkpoint, the last one too
+    ax.step(t, result.depth, where="mid", color="tab:green", marker=".", ms=4,
+            label="hops from the BS (depth)")
     ax.set(xlabel="t (s)", ylabel="hops", xlim=(0, t[-1]))
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
     far = ax.twinx()
-    far.plot(t, result.farthest, color="tab:purple", lw=1.2, label="farthest connected drone")
+    far.plot(t, result.farthest, color="tab:purple", lw=1.2, marker=".", ms=4,
+             label="farthest connected drone")
     far.axhline(mission.channel.rc, color="tab:blue", ls="--", lw=0.8,
                 label=f"r_c = {mission.channel.rc:g} m")
     far.set(ylabel="distance from the BS (m)", ylim=(0, None))
     lines = [*ax.get_lines(), *far.get_lines()]
-    ax.legend(lines, [str(line.get_label()) for line in lines], loc="upper left", fontsize=8,
-              framealpha=0.9)
+    ax.legend(lines, [str(line.get_label()) for line in lines], loc="lower left",
+              bbox_to_anchor=(0.0, 1.0), ncols=3, fontsize=8, frameon=False)  # above the data
     ax.set_ylim(0, max(float(np.nanmax(result.depth, initial=0.0)), 1.0) + 0.5)
     return ax
