@@ -111,7 +111,7 @@ MEASURES = {m.column: m for m in (
     Measure("search_share", "search share of mission time", False),
     Measure("reachability", "target reachability", False, share_of_td=True),
     Measure("connected", "drones connected", False),
-    Measure("depth", "hops to the farthest routed drone", False, "hops", digits=2),
+    Measure("depth", "depth of the BS's network", False, "hops", digits=2),
     Measure("farthest", "farthest connected drone", False, "m", digits=0),
 )}
 """The measures of :func:`summarize`, by column."""
