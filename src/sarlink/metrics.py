@@ -285,8 +285,8 @@ def summarize(df: pd.DataFrame, td: float | Sequence[float] | None = None,
     - ``reachability``: mean fraction of ``[0, t_d]`` in which the target had a route to the BS;
     - ``connected``: mean fraction of drones with a route to the BS over ``[0, t_d]``;
     - ``depth``, ``farthest``: the BS's network at ``t_d`` (the last checkpoint at or before
-      it), averaged over the runs: the most hops from the BS to an airborne drone with a
-      route, and the distance from the BS of the farthest such drone, m;
+        it), averaged over the runs: the most hops from the BS to an airborne drone with a
+        route, and the distance from the BS of the farthest such drone, m;
 
     with ``*_lo``/``*_hi`` (95% Wilson) beside probabilities and ``*_se`` beside means.
     """
