@@ -60,9 +60,8 @@ def load_revision(rev: str, folder: Path) -> ModuleType:
     package = folder / "src" / "sarlink"
     for path in package.rglob("*.py"):
         text = _NAME.sub("sarlink_rev", path.read_text()).replace("cache=True", "cache=False")
-        # the registry knows sarlink's own modules by the package's name (``caller_origin``)
-        text = text.replace('SARLINK = "sarlink"', 'SARLINK = "sarlink_rev"')
-        path.write_text(text)
+        # the registries know sarlink's own modules by the package's name (registry.SARLINK)
+        path.write_text(text.replace('SARLINK = "sarlink"', 'SARLINK = "sarlink_rev"'))
     package.rename(folder / "sarlink_rev")
     sys.path.insert(0, str(folder))
     return importlib.import_module("sarlink_rev")

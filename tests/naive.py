@@ -24,6 +24,10 @@ class NaiveResult:
     t_reachable: float
     connected_time: float
     positions: list[list[tuple[float, float]]]
+    depth: list[int]
+    """At every checkpoint: the most hops from the BS to an airborne drone with a route."""
+    farthest: list[float]
+    """At every checkpoint: the distance from the BS of the farthest such drone, m (0: none)."""
 
 
 def _dist(p: tuple[float, float], q: tuple[float, float]) -> float:
@@ -52,6 +56,26 @@ def component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[
                 seen.add(b)
                 queue.append(b)
     return seen
+
+
+def network(linked: list[list[bool]], parked: list[bool], where: list[tuple[float, float]],
+            bs: tuple[float, float]) -> tuple[int, float]:
+    """The BS's network: the most hops from the BS to an airborne drone with a route, and the
+    distance from the BS of the farthest such drone (0 and 0.0 if none). ``linked`` is the
+    adjacency matrix of the drones, the BS (``N``) and the target (``N + 1``, which relays
+    nothing); a parked drone is part of the BS, hop 0. A plain breadth-first search."""
+    n = len(parked)
+    hops = {n: 0, **{i: 0 for i in range(n) if parked[i]}}
+    queue = deque(hops)
+    while queue:
+        a = queue.popleft()
+        for b in range(n):  # drones only: never the target
+            if linked[a][b] and b not in hops:
+                hops[b] = hops[a] + 1
+                queue.append(b)
+    airborne = [i for i in hops if i < n and not parked[i]]
+    return (max((hops[i] for i in airborne), default=0),
+            max((_dist(where[i], bs) for i in airborne), default=0.0))
 
 
 def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) -> NaiveResult:
@@ -92,6 +116,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     steps = round(mission.timing.horizon / dt)
     coherence = round(mission.coherence / dt)
     positions = []
+    checkpoints = set(mission.checkpoint_steps())
+    depth: list[int] = []
+    farthest: list[float] = []
 
     # mean-area: a loss margin of sigma² ln10 / 10n dB, so that E[area] = pi rc²
     n_exp, sigma = mission.channel.pathloss_exponent, mission.channel.sigma
@@ -247,6 +274,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             t_not = t
         if record:
             positions.append(list(pos))
+        if k in checkpoints:
+            matrix = [[j in links[i] for j in range(n + 2)] for i in range(n + 2)]
+            hops, far = network(matrix, [mo == "landed" for mo in mode], pos, bs)
+            depth.append(hops)
+            farthest.append(far)
         if k == steps:
             break
         over = {BS} if readings.reachability == "direct" else set()  # else drones only
@@ -318,4 +350,5 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
                       pos[i][1] + v * dt * math.sin(heading[i]))
 
     immediate = t_not is not None and t_not == t_det
-    return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions)
+    return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
+                       farthest)

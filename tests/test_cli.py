@@ -25,6 +25,9 @@ def test_simulate_json_reports_the_run_of_the_api() -> None:
     assert data["t_notify"] == expected.t_notify
     assert data["immediate"] is expected.immediate
     assert data["t_reachable"] == expected.t_reachable()
+    # the BS's network, over the run's checkpoints
+    assert data["depth_max"] == max(expected.depth) >= 1
+    assert data["farthest_max"] == max(expected.farthest) > 0
 
 
 def test_simulate_json_has_null_when_nothing_happened() -> None:
@@ -40,6 +43,7 @@ def test_simulate_summary_and_plot(tmp_path) -> None:
     out = runner.invoke(app, ["simulate", "--planner", "conb", "--plot", str(png)])
     assert out.exit_code == 0, out.output
     assert "BS notified at" in out.stdout and "ConB" in out.stdout
+    assert "BS's network, deepest" in out.stdout and "farthest connected drone" in out.stdout
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 

@@ -63,6 +63,9 @@ def check(mission: Mission, run: int, rcs: list[float]) -> list[RunResult]:
         same_outcome(got, direct)
         same_outcome(plain, direct)
         assert plain.notify_times is None
+        # a range scan builds no graph of its own: no snapshot of the BS's network
+        assert np.isnan(got.depth).all() and np.isnan(plain.farthest).all()
+        np.testing.assert_array_equal(np.isnan(direct.depth), np.isnan(direct.reach_cum))
     return via
 
 

@@ -159,6 +159,10 @@ def test_a_run_stopped_at_an_event_is_the_full_run_up_to_it(planner: str) -> Non
             np.testing.assert_array_equal(early.reach_cum[recorded], full.reach_cum[recorded])
             assert np.isnan(early.reach_cum[~recorded]).all()
             assert np.isnan(early.connected_cum[~recorded]).all()
+            for snapshot in ("depth", "farthest"):  # the BS's network, taken until the stop
+                np.testing.assert_array_equal(getattr(early, snapshot)[recorded],
+                                              getattr(full, snapshot)[recorded])
+                assert np.isnan(getattr(early, snapshot)[~recorded]).all()
             stopped += at is not None and at < 3000.0
     assert stopped >= 8  # most runs did stop early: the claim is not vacuous
 
@@ -186,6 +190,8 @@ def test_a_run_whose_team_has_landed_skips_to_the_horizon_with_the_same_records(
             full.t_detect, full.t_notify, full.immediate)
         np.testing.assert_array_equal(fast.reach_cum, full.reach_cum)
         np.testing.assert_array_equal(fast.connected_cum, full.connected_cum)
+        np.testing.assert_array_equal(fast.depth, full.depth)  # the landed team's network
+        np.testing.assert_array_equal(fast.farthest, full.farthest)  # repeats to the horizon
         assert full.trajectory is not None
         landed = (full.trajectory.mode == Mode.LANDED).all(axis=1)
         settled += bool(landed[-2])

@@ -231,6 +231,7 @@ def test_cli_summarize_formats(reference: tuple[Path, pd.DataFrame]) -> None:
     assert table.exit_code == 0, table.output
     assert "planner=conb, rc=1000.0 (100 runs)" in table.stdout
     assert "t_d = 1000 s" in table.stdout and "mission success P_s" in table.stdout
+    assert "BS's network depth (hops)" in table.stdout  # ConB's runs record their network
     records = json.loads(runner.invoke(app, ["summarize", str(out), "--json"]).stdout)
     assert len(records) == 4 and records[0]["td"] == 2000.0 and records[0]["runs"] == 100
     csv = runner.invoke(app, ["summarize", str(out), "--td", "500", "--csv"]).stdout

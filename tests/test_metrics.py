@@ -128,6 +128,9 @@ def test_reachability_and_connectivity_agree_with_the_engine() -> None:
         rows = out[out.run == r.run].set_index("td")
         for td in tds:
             assert rows.loc[td, "reachability"] == pytest.approx(r.t_reachable(td) / td)
+            taken = np.searchsorted(r.checkpoints, td, side="right") - 1  # not interpolated
+            assert rows.loc[td, "depth"] == r.depth[taken]
+            assert rows.loc[td, "farthest"] == r.farthest[taken]
             assert rows.loc[td, "connected"] == pytest.approx(r.connected_fraction(td))
             assert rows.loc[td, "P_s"] == r.notified(td) and rows.loc[td, "P_d"] == r.detected(td)
     assert any(r.t_reachable() > 0 for r in results)
@@ -171,6 +174,26 @@ def test_success_never_decreases_in_td(notify: list[float], tds: list[float]) ->
     assert np.all((curve.P_s_lo <= curve.P_s) & (curve.P_s <= curve.P_s_hi))
     expected = [np.sum(np.asarray(notify) <= td) / len(notify) for td in sorted(tds)]
     assert curve.P_s.tolist() == pytest.approx(expected)
+
+
+def test_the_bs_network_is_its_snapshot_at_td_averaged_over_the_runs() -> None:
+    """A snapshot is read at the last checkpoint at or before t_d, never interpolated: at
+    t_d = 75 s the one taken at 50 s. CovB's five runs have depths 3, 0, 1, 2, 4 at 50 s (mean
+    2, standard error sqrt(2.5 / 5)) and 2, 0, 1, 1, 4 at 100 s; a table stored before the
+    snapshots has none (NaN), and neither has a run stopped before t_d."""
+    df = made_up()
+    depths = [[1, 2, 3], [1, 1, 1], [1, 3, 2], [1, 0, 0], [1, 1, 1], [1, 2, 1], [1, 4, 4]]
+    df["depth"] = [np.array(d, dtype=float) for d in depths]
+    df["farthest"] = [100.0 * np.array(d, dtype=float) for d in depths]
+    covb = summarize(df, td=[50, 75, 100]).query("planner == 'covb'").set_index("td")
+    assert covb.depth.tolist() == [2.0, 2.0, 1.6]
+    assert covb.depth_se.loc[50] == pytest.approx(math.sqrt(2.5 / 5))
+    assert covb.farthest.tolist() == pytest.approx([200.0, 200.0, 160.0])
+    values = run_values(df.assign(run=range(len(df))), [75.0], ["planner"])
+    assert values["depth@75"].tolist() == [2.0, 1.0, 3.0, 0.0, 1.0, 2.0, 4.0]
+    assert summarize(made_up(), td=50).depth.isna().all()
+    df["depth"] = [np.array([1.0, math.nan, math.nan]), *df["depth"][1:]]
+    assert math.isnan(summarize(df, td=50).depth.iloc[0])
 
 
 def test_run_values_are_each_runs_own_as_the_engine_reports_them() -> None:

@@ -133,6 +133,15 @@ def test_ga_best_cost_never_rises_and_ends_at_the_plan(objective: str) -> None:
     assert plan.history[-1] == pytest.approx(cost(plan, objective), rel=1e-12)
 
 
+def test_the_ga_counts_population_times_iterations_evaluations() -> None:
+    """Fig. 1's work count of the GA: every individual of every iteration's population is
+    costed once (the population rounded down to Kirk's groups of 8); the other solvers count
+    none."""
+    assert solve(GRID, BS, 4, population=86, iterations=37).evaluations == 80 * 37
+    assert solve(GRID, BS, 4, population=8, iterations=1).evaluations == 8
+    assert solve(GRID, BS, 4, solver="ortools", budget=5).evaluations is None
+
+
 def test_ga_is_reproducible_with_a_seed_and_differs_across_seeds() -> None:
     a, b = (solve(GRID, BS, 4, seed=3, **FAST) for _ in range(2))
     c = solve(GRID, BS, 4, seed=4, **FAST)

@@ -40,6 +40,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, fig1, section3
+from sarlink.paper.report import write_report
 from sarlink.planners import (
     PAPER_PLANNERS,
     RulePlanner,
@@ -359,6 +360,21 @@ def test_plan_time_claim_is_decided_from_the_timings(case: Case) -> None:
         (case.claim.check.__doc__ or "").split())
 
 
+def test_fig1_values_list_the_work_counted_beside_the_time() -> None:
+    """Fig. 1's table of values: the search expansions and GA evaluations of each planner and
+    team size beside its times, "–" where a planner has no such part."""
+    relaying = ["conb", "mtsp-conb", "concov"]
+    times = made_up_plan_times(lambda p, n: 0.1).assign(
+        expansions=lambda f: np.where(f["planner"].isin(relaying), 1000 * f["drones"], 0),
+        evaluations=lambda f: np.where(f["planner"].isin(["mtsp", "mtsp-conb"]), 400_000, 0))
+    (_, values), = FIGURES[1].values(times)
+    cells = values.set_index(["planner", "N_m"])[["search expansions", "GA evaluations"]]
+    assert cells.loc[("ConB", 22)].tolist() == ["22,000", "–"]
+    assert cells.loc[("mTSP-ConB", 4)].tolist() == ["4,000", "400,000"]
+    assert cells.loc[("mTSP", 10)].tolist() == ["–", "400,000"]
+    assert cells.loc[("CovB", 2)].tolist() == ["–", "–"]
+
+
 def test_every_plan_time_claim_is_tested_every_way() -> None:
     tested = {(c.claim.name, c.outcome) for c in CASES}
     expected = {(c.name, o) for c in CLAIMS if c.tables == ("plan_times",)
@@ -412,8 +428,8 @@ def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose
         name: str, tmp_path: Path) -> None:
     """Figs. 8 and 9 read only measures settled at notification from these sweeps: their
     tables from runs stopped there equal those from runs flown to the horizon, but for the
-    reachability and connected fraction, which runs stopped before ``t_d`` do not have (NaN:
-    never a wrong value)."""
+    reachability, connected fraction and BS's network, which runs stopped before ``t_d`` do
+    not have (NaN: never a wrong value)."""
     exp = EXPERIMENTS[name]
     built = exp.build(6)
     assert built.mission.timing.stop == "notified"
@@ -422,7 +438,8 @@ def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose
         [(Experiment(name=name, seed=built.seed, runs=6,
                      mission=built.mission.replace(stop=stop), grid=grid), tmp_path / stop)
          for stop in ("notified", "horizon")], workers=1, progress=False)]
-    lost = [c for c in tables[0][name] if c.startswith(("reachability", "connected"))]
+    lost = [c for c in tables[0][name]
+            if c.startswith(("reachability", "connected", "depth", "farthest"))]
     kept = tables[0][name][lost].notna()
     assert lost and not kept.all().all() and tables[1][name][lost].notna().all().all()
     pd.testing.assert_frame_equal(tables[0][name][lost][kept], tables[1][name][lost][kept])
@@ -431,6 +448,29 @@ def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose
                                       tables[1][table].drop(columns=lost, errors="ignore"))
     stopped = tables[0][name]
     assert (stopped["P_s"] < 1).any() and (stopped["P_s"] > 0).any()  # both kinds of run
+
+
+def test_the_report_tabulates_the_bs_network_of_the_relaying_planners(tmp_path: Path) -> None:
+    """The report's section "do chains form?": for ConB, mTSP-ConB and ConCov (not CovB, which
+    relays nothing by design) at every t_d of the main table, the mean depth of the BS's
+    component and distance of its farthest connected drone, as the summary of the runs has
+    them."""
+    mission = Mission.build(drones=10, rc=500.0, horizon=1000.0, iterations=100)
+    experiment = Experiment(name="network", seed=3, runs=3, mission=mission,
+                            grid={"planner": ["conb", "mtsp-conb", "concov", "covb"]})
+    (runs,) = sweep_all([(experiment, tmp_path / "runs")], workers=1, progress=False)
+    main = summarize(runs, td=[500.0, 1000.0], by=["planner", "drones", "rc"])
+    md, _ = write_report(tmp_path, runs=3, quick=True, figures={}, tables={"main": main},
+                         findings=[], stages=[], seconds=1.0, workers="this process")
+    rows = _report_table(md.read_text(), "## The BS's network: do chains form?")
+    labels = {get_planner(p).label: p for p in ("conb", "mtsp-conb", "concov")}
+    assert sorted((label, td) for _, label, _, td, _, _ in rows) == sorted(
+        (label, td) for label in labels for td in ("500", "1000"))
+    for rc, label, n, td, depth, farthest in rows:
+        row = main[(main["planner"] == labels[label]) & (main["td"] == float(td))].iloc[0]
+        assert (rc, n) == ("500", "10")
+        assert depth == MEASURES["depth"].text(row) != "–"
+        assert farthest == MEASURES["farthest"].text(row) != "–"
 
 
 def test_fig9_draws_the_other_planners_solid_beside_the_paper_planners_dashed() -> None:

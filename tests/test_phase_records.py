@@ -1,18 +1,28 @@
 """The records phase (sarlink.engine.records) called directly: checkpoints against sums taken
-step by step in Python, the jump to the horizon against the loop it replaces, and when a team
-has settled (docs/model.md, Records and metrics)."""
+step by step in Python, the jump to the horizon against the loop it replaces, when a team
+has settled, and the BS's network against a hand-counted case and the slow reference's
+breadth-first search (docs/model.md, Records and metrics)."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 
-from phase_inputs import pack
+from naive import network as naive_network
+from phase_inputs import pack, words
 from sarlink.engine.params import LANDED, PER_PERIOD, REPORTING, RETURNING, SEARCHING
-from sarlink.engine.records import carry_records, new_track, record_step, settled, take_checkpoints
+from sarlink.engine.records import (
+    carry_records,
+    network,
+    new_track,
+    record_step,
+    settled,
+    take_checkpoints,
+)
 
 QUARTERS = st.integers(0, 8).map(lambda q: q / 4)  # sums of these are exact
 
@@ -106,3 +116,53 @@ def test_a_recorded_step_holds_the_observed_state() -> None:
     assert track_mode[2].tolist() == mode.tolist()
     np.testing.assert_array_equal(links[2], adj)
     assert all((a[[0, 1, 3]] == 0).all() for a in track)
+
+
+def _symmetric(n: int, pairs: Iterable[tuple[int, int]]) -> np.ndarray:
+    """The adjacency bitsets of ``n`` drones, the BS and the target with the links ``pairs``."""
+    around: list[set[int]] = [set() for _ in range(n + 2)]
+    for a, b in pairs:
+        if a != b:
+            around[int(a)].add(int(b))
+            around[int(b)].add(int(a))
+    return pack(around, words(n + 2))
+
+
+def test_the_network_counts_hops_from_the_bs_and_its_parked_drones() -> None:
+    """Six drones, the BS (6) and the target (7), counted by hand: 0 is one hop out, 1 two, 2
+    three; drone 3 is parked, part of the BS (linked to it or not), so 4, linked to it, is
+    one hop out; 5 is linked only to the target, which relays nothing, so it has no route.
+    Depth 3; the farthest of 0, 1, 2 and 4 is 4, at 400 m: the farthest need not be the
+    deepest."""
+    n, bs = 6, (0.0, 0.0)
+    mode = np.array([SEARCHING, SEARCHING, RETURNING, LANDED, REPORTING, SEARCHING],
+                    dtype=np.int8)
+    px = np.array([100.0, 200.0, 300.0, 0.0, 400.0, 900.0, 0.0, 500.0])
+    py = np.zeros(n + 2)
+    chain = [(6, 0), (0, 1), (1, 2), (3, 4), (2, 7), (5, 7)]
+    assert network(_symmetric(n, chain), mode, px, py, *bs) == (3, 400.0)
+    assert network(_symmetric(n, [*chain, (6, 3)]), mode, px, py, *bs) == (3, 400.0)
+    parked = np.full(n, LANDED, dtype=np.int8)  # every drone parked: none airborne
+    assert network(_symmetric(n, chain), parked, px, py, *bs) == (0, 0.0)
+    alone = _symmetric(n, [(2, 7)])  # the BS linked to nothing, no drone parked
+    assert network(alone, np.full(n, SEARCHING, dtype=np.int8), px, py, *bs) == (0, 0.0)
+
+
+@given(n=st.integers(1, 70), p_link=st.floats(0.0, 0.3), seed=st.integers(0, 2**32 - 1))
+def test_the_network_is_the_reference_breadth_first_search(n: int, p_link: float,
+                                                           seed: int) -> None:
+    """On random graphs of up to 72 nodes (two bitset words), random modes and positions, the
+    bitset search level by level gives the depth and farthest distance of the slow
+    reference's plain breadth-first search on the adjacency matrix."""
+    rng = np.random.default_rng(seed)
+    m = n + 2
+    linked = np.triu(rng.random((m, m)) < p_link, 1)
+    linked |= linked.T
+    adj = _symmetric(n, zip(*np.nonzero(linked), strict=True))
+    mode = rng.choice([SEARCHING, RETURNING, LANDED, REPORTING], n,
+                      p=[0.6, 0.1, 0.2, 0.1]).astype(np.int8)
+    px, py = rng.uniform(0.0, 4000.0, m), rng.uniform(0.0, 4000.0, m)
+    bs = (float(px[n]), float(py[n]))
+    want = naive_network(linked.tolist(), (mode == LANDED).tolist(),
+                         list(zip(px.tolist(), py.tolist(), strict=True)), bs)
+    assert network(adj, mode, px, py, *bs) == want

@@ -160,7 +160,7 @@ def _seen(px: np.ndarray, py: np.ndarray, pz: np.ndarray, hx: np.ndarray, hy: np
     bits = np.zeros((m, words(m)), dtype=np.uint64)
     return Observation(px, py, pz, hx, hy, mode, on_route, last_change,
                        np.zeros(n, dtype=np.bool_), bits, bits, bits[0], bits[0], rc,
-                       *_no_routes(n), np.random.default_rng(0))
+                       *_no_routes(n), np.random.default_rng(0), np.zeros(1, dtype=np.int64))
 
 
 @given(team=teams(), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
@@ -174,10 +174,38 @@ def test_predict_routes_is_a_search_on_extrapolated_positions(
     px, py, pz = node_arrays(xy, n, altitude)
     hx, hy = _headings(angles)
     qx, qy, disc2, out, expanded = _conb_arrays(n, rc)
-    predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx, qy, disc2,
-                   out, expanded, np.zeros(n, np.bool_), *_no_routes(n),
-                   pack([range(n + 2)], words(n + 2))[0])
-    assert members(out) == _predicted(xy, hx, hy, modes, p, steps, altitude)
+    count = predict_routes(px, py, hx, hy, np.array(modes, dtype=np.int8), pz, p, steps, qx,
+                           qy, disc2, out, expanded, np.zeros(n, np.bool_), *_no_routes(n),
+                           pack([range(n + 2)], words(n + 2))[0])
+    routed = _predicted(xy, hx, hy, modes, p, steps, altitude)
+    assert members(out) == routed
+    # the work counted (Fig. 1) is the nodes expanded: every routed node when some node is
+    # cut off (the search cannot stop early), at most every routed node otherwise
+    assert count == len(members(expanded) - {n + 1})
+    assert count == len(routed) if len(routed) < n + 1 else 1 <= count <= len(routed)
+
+
+def test_the_search_counts_the_nodes_it_expands_by_hand() -> None:
+    """Three parked drones (predicted where they are) east of the BS, r_c = 500 m: 0 at 400 m,
+    1 at 800 m, 2 at 1200 m. The search from the BS expands the BS, 0 and 1 and then holds
+    every node: 3 expansions, 2's links never computed. With 2 out of reach at 2000 m it
+    expands the same three and runs out of nodes: 3 again. A goal the BS alone already
+    covers needs none."""
+    n, bs = 3, (2000.0, 2000.0)
+    modes = np.full(n, LANDED, dtype=np.int8)
+    p = params(rc=500.0)
+    hx, hy = _headings([0.0] * n)
+    for far, routed in ((1200.0, {0, 1, 2, n}), (2000.0, {0, 1, n})):
+        xy = [(bs[0] + 400.0, bs[1]), (bs[0] + 800.0, bs[1]), (bs[0] + far, bs[1]), bs,
+              (100.0, 100.0)]
+        px, py, pz = node_arrays(xy, n)
+        for goal, count in ((range(n + 2), 3), ({n}, 0)):
+            qx, qy, disc2, out, expanded = _conb_arrays(n, p.rc)
+            assert predict_routes(px, py, hx, hy, modes, pz, p, 2, qx, qy, disc2, out,
+                                  expanded, np.zeros(n, np.bool_), *_no_routes(n),
+                                  pack([goal], words(n + 2))[0]) == count
+            if count:
+                assert members(out) == routed
 
 
 @given(team=teams(most=70), steps=st.integers(1, 40), rc=st.floats(200.0, 1500.0),
@@ -515,7 +543,7 @@ def _observation(seed: int, n: int, p: Params) -> Observation:
     return Observation(px, py, pz, np.cos(angles), np.sin(angles), mode,
                        np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.int64),
                        np.zeros(n, dtype=np.bool_), adj, near, routed, spread, p.rc,
-                       *_no_routes(n), np.random.default_rng(0))
+                       *_no_routes(n), np.random.default_rng(0), np.zeros(1, dtype=np.int64))
 
 
 @pytest.mark.parametrize("seed", range(4))

@@ -6,9 +6,9 @@ A range-free run (:attr:`sarlink.engine.Prepared.range_free`) of an experiment w
 the BS is notified at ``notify_times[j]`` for the first ``j`` with
 ``notify_rc2[j] <= r_c * r_c``. That is all that detection and notification need, so
 ``P_d``, ``P_s`` at every ``t_d``, the mission time, the search share and immediate
-notification follow at any range, exactly. Reachability and connectivity need the geometry
-of every step, which the rows do not keep (it would be some 40 times their size): they are
-NaN at a range that was not flown.
+notification follow at any range, exactly. Reachability, connectivity and the BS's network
+(depth, farthest connected drone) need the geometry of every step, which the rows do not keep
+(it would be some 40 times their size): they are NaN at a range that was not flown.
 """
 
 from __future__ import annotations
@@ -77,10 +77,10 @@ def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
     Runs flown at ``rc`` are kept as they are. Every other range-free run is evaluated from the
     row of the same run at the largest flown range below ``rc`` (the smallest flown range
     if there is none): its ``rc`` becomes ``rc``, ``t_notify`` and ``immediate`` are read
-    from the staircase, and ``reach_cum``, ``connected_cum``, ``t_reachable`` and
-    ``connected_fraction`` are NaN. Runs of teams that fly differently at each range are left
-    out, with a warning, unless they were flown at ``rc``; so are runs stored without a
-    staircase (an experiment without ``staircase = true``).
+    from the staircase, and ``reach_cum``, ``connected_cum``, ``depth``, ``farthest``,
+    ``t_reachable`` and ``connected_fraction`` are NaN. Runs of teams that fly differently at
+    each range are left out, with a warning, unless they were flown at ``rc``; so are runs
+    stored without a staircase (an experiment without ``staircase = true``).
     """
     if not (math.isfinite(rc) and rc > 0):
         raise ConfigError(f"rc must be a finite range > 0 m, got {rc:g}")
@@ -127,7 +127,9 @@ def at_range(runs: pd.DataFrame, rc: float) -> pd.DataFrame:
         out["rc"] = np.where(moved, rc, out["rc"].to_numpy(dtype=float))
         for column in ("t_reachable", "connected_fraction"):
             out[column] = np.where(moved, np.nan, out[column].to_numpy(dtype=float))
-        for column in ("reach_cum", "connected_cum"):
+        for column in ("reach_cum", "connected_cum", "depth", "farthest"):
+            if column not in out:  # files written before the engine kept the BS's network
+                continue
             values = out[column].to_list()
             for i in rows:
                 values[i] = [math.nan] * len(values[i])

@@ -10,7 +10,9 @@ and printed, for the command line, the figures and the report alike.
 The input is a table of runs as :func:`sarlink.load` returns it. The columns used are
 ``t_detect``, ``t_notify`` (NaN when the event did not happen) and ``immediate``, and for
 reachability and connectivity ``reach_cum``, ``connected_cum`` and the ``checkpoints`` they
-were recorded at, as the engine stored them (``horizon`` and ``checkpoint`` group the runs).
+were recorded at, as the engine stored them (``horizon`` and ``checkpoint`` group the runs),
+and for the BS's network its snapshots ``depth`` and ``farthest`` at the same checkpoints
+(NaN where a table of runs stored before them lacks them).
 """
 
 from __future__ import annotations
@@ -109,6 +111,8 @@ MEASURES = {m.column: m for m in (
     Measure("search_share", "search share of mission time", False),
     Measure("reachability", "target reachability", False, share_of_td=True),
     Measure("connected", "drones connected", False),
+    Measure("depth", "depth of the BS's network", False, "hops", digits=2),
+    Measure("farthest", "farthest connected drone", False, "m", digits=0),
 )}
 """The measures of :func:`summarize`, by column."""
 
@@ -151,6 +155,28 @@ def _cum_at(df: pd.DataFrame, column: str, td: np.ndarray) -> np.ndarray:
         frac = (td[rows] - times[j]) / (times[j + 1] - times[j])
         picked = values[np.arange(len(rows)), j]
         out[rows] = picked + frac * (values[np.arange(len(rows)), j + 1] - picked)
+    return out
+
+
+def _snapshot_at(df: pd.DataFrame, column: str, td: np.ndarray) -> np.ndarray:
+    """A snapshot record (``depth``, ``farthest``) of every run at its ``td``: the one taken at
+    the last checkpoint at or before ``td`` (a snapshot is not interpolated). NaN for runs
+    stored without it (files written before the engine kept it)."""
+    out = np.full(len(df), np.nan)
+    if column not in df:
+        return out
+    cells = df[column].to_numpy()
+    stored = np.array([np.ndim(v) == 1 for v in cells], dtype=bool)
+    spacing = df[["horizon", "checkpoint"]].to_numpy(dtype=float)
+    combos, which = np.unique(spacing, axis=0, return_inverse=True)
+    for c in range(len(combos)):  # one pass per sampling, as in _cum_at
+        rows = np.flatnonzero((which.ravel() == c) & stored)
+        if not rows.size:
+            continue
+        values = np.stack(cells[rows]).astype(float)
+        times = np.asarray(df["checkpoints"].iloc[rows[0]], dtype=float)
+        j = np.clip(np.searchsorted(times, td[rows], side="right") - 1, 0, len(times) - 1)
+        out[rows] = values[np.arange(len(rows)), j]
     return out
 
 
@@ -228,6 +254,9 @@ def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np
         fraction = _cum_at(df, column, td) / td
         mean, dev, _ = sums.mean(fraction, everyone)
         out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
+    for name in ("depth", "farthest"):
+        mean, dev, _ = sums.mean(_snapshot_at(df, name, td), everyone)
+        out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
     return out
 
 
@@ -255,6 +284,9 @@ def summarize(df: pd.DataFrame, td: float | Sequence[float] | None = None,
     - ``search_share``: their mean ``t_detect`` over their mean ``t_notify``;
     - ``reachability``: mean fraction of ``[0, t_d]`` in which the target had a route to the BS;
     - ``connected``: mean fraction of drones with a route to the BS over ``[0, t_d]``;
+    - ``depth``, ``farthest``: the BS's network at ``t_d`` (the last checkpoint at or before
+        it), averaged over the runs: the most hops from the BS to an airborne drone with a
+        route, and the distance from the BS of the farthest such drone, m;
 
     with ``*_lo``/``*_hi`` (95% Wilson) beside probabilities and ``*_se`` beside means.
     """
@@ -307,8 +339,9 @@ def run_values(df: pd.DataFrame, tds: Sequence[float], by: Sequence[str]) -> pd.
     two grid points is sharper run by run than from two summaries. One row per run: the
     columns ``by``, ``run``, ``t_detect``, ``t_notify`` (NaN if it did not happen),
     ``immediate``, and for each ``td`` the fraction of ``[0, t_d]`` the target was reachable
-    (``reach@<td>``) and the mean fraction of drones connected (``connected@<td>``), read as
-    :func:`summarize` reads them. Runs without those records (stopped at an event) get NaN.
+    (``reach@<td>``), the mean fraction of drones connected (``connected@<td>``) and the BS's
+    network at ``t_d`` (``depth@<td>``, ``farthest@<td>``), read as :func:`summarize` reads
+    them. Runs without those records (stopped at an event) get NaN.
     """
     out = df[[*by, "run"]].reset_index(drop=True)
     for column in ("t_detect", "t_notify"):
@@ -322,4 +355,7 @@ def run_values(df: pd.DataFrame, tds: Sequence[float], by: Sequence[str]) -> pd.
             else:
                 values = np.full(len(df), np.nan)
             out[f"{name}@{td:g}"] = values
+        for name in ("depth", "farthest"):
+            out[f"{name}@{td:g}"] = (_snapshot_at(df, name, np.full(len(df), float(td)))
+                                     if td <= horizon.min() else np.full(len(df), np.nan))
     return out

@@ -1,8 +1,10 @@
-"""Plan computation time (Fig. 1): the CPU time to produce a whole mission's paths offline."""
+"""Plan computation time (Fig. 1): the CPU time to produce a whole mission's paths offline, and
+the work the paper's sentences name, counted."""
 
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 
 from sarlink.config import Mission
 from sarlink.mtsp import solve_for
@@ -10,8 +12,24 @@ from sarlink.planners import get_planner
 from sarlink.simulation import prepare
 
 
-def plan_seconds(mission: Mission, seed: int = 0) -> float:
-    """CPU seconds to generate every drone's path for ``mission`` with its planner, offline.
+@dataclass(frozen=True)
+class PlanCost:
+    """What one mission's plan cost: CPU time, and counts of work that do not depend on the
+    machine or on how fast sarlink's engine is."""
+
+    seconds: float
+    """CPU seconds (``time.process_time``)."""
+    expansions: int
+    """Nodes expanded by the connectivity checks' searches from the BS over the whole plan
+    (ConB's, and ConCov's and mTSP-ConB's ConB part: "depth-first search" in the paper); 0
+    for a planner without them."""
+    evaluations: int
+    """Individuals the mTSP GA costed, population × iterations; 0 without an mTSP part."""
+
+
+def plan_cost(mission: Mission, seed: int = 0) -> PlanCost:
+    """CPU seconds and work to generate every drone's path for ``mission`` with its planner,
+    offline.
 
     As in the paper's Fig. 1, all paths are generated before flight for a fair comparison:
     the mTSP part is solved afresh (no plan cache), and the distributed drones' paths are
@@ -24,18 +42,21 @@ def plan_seconds(mission: Mission, seed: int = 0) -> float:
     The clock is this process's CPU time (``time.process_time``), not the wall clock: the
     computation's cost, which on a shared machine does not grow with what else runs (the
     paper timed a dedicated computer, where the two agree). Every planner computes in this
-    one thread.
+    one thread. The counts are those of the timed computation: the GA's evaluations
+    (:attr:`sarlink.mtsp.MtspPlan.evaluations`) and the nodes the rule's route predictions
+    expanded in the run (``RunRecord.work``).
     """
     steering = get_planner(mission.team.planner).steering(mission)  # warms the plan cache
     planned = sum(len(route) > 0 for route in steering.routes)
     distributed = steering.distributed(mission.team.drones).any()
     prepared = prepare(mission)
-    prepared.run(seed, 0)  # compile or load the kernels outside the timing
+    prepared.run_record(seed, 0)  # compile or load the kernels outside the timing
     if planned:
         solve_for(mission.replace(iterations=1), planned)  # and the GA
+    expansions = evaluations = 0
     start = time.process_time()
     if planned:
-        solve_for(mission, planned)
+        evaluations = solve_for(mission, planned).evaluations or 0
     if distributed:
-        prepared.run(seed, 0)
-    return time.process_time() - start
+        expansions = int(prepared.run_record(seed, 0).work)
+    return PlanCost(time.process_time() - start, expansions, evaluations)

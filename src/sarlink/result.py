@@ -37,7 +37,11 @@ class RunResult:
     Times are in seconds from take-off; ``None`` means the event did not happen within the
     horizon. ``reach_cum[c]`` is the time the target was reachable during
     ``[0, checkpoints[c])``; ``connected_cum[c]`` the time integral of the fraction of drones
-    with a route to the BS over the same interval.
+    with a route to the BS over the same interval. ``depth[c]`` and ``farthest[c]`` are a
+    snapshot of the BS's network at ``checkpoints[c]``: the most hops from the BS to an
+    airborne drone with a route (parked drones are part of the BS) and the distance from the BS
+    of the farthest such drone, m (0: none). All four are NaN after a run's stop; the snapshots
+    are NaN too in a run read from a range scan, which builds no graph of its own.
     """
 
     seed: int
@@ -50,6 +54,8 @@ class RunResult:
     checkpoints: np.ndarray
     reach_cum: np.ndarray
     connected_cum: np.ndarray
+    depth: np.ndarray
+    farthest: np.ndarray
     trajectory: Trajectory | None = None
     notify_times: np.ndarray | None = None
     """A range-free run's notification staircase (:mod:`sarlink.engine.critical_ranges`), when asked
@@ -110,6 +116,8 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
     checkpoints = np.stack([r.checkpoints for r in results])
     reach = np.stack([r.reach_cum for r in results])
     connected = np.stack([r.connected_cum for r in results])
+    depth = np.stack([r.depth for r in results])
+    farthest = np.stack([r.farthest for r in results])
     columns: dict[str, Any] = {
         "seed": np.array([r.seed for r in results], dtype=np.int64),
         "run": np.array([r.run for r in results], dtype=np.int64),
@@ -127,6 +135,8 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
         "checkpoints": checkpoints,
         "reach_cum": reach,
         "connected_cum": connected,
+        "depth": depth,
+        "farthest": farthest,
     }
     if all(r.notify_times is not None and r.notify_rc2 is not None for r in results):
         columns["notify_times"] = [r.notify_times for r in results]

@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 from typing import Annotated, Any
 
+import numpy as np
 import typer
 from rich.table import Table
 
@@ -26,14 +27,21 @@ def _finite_or_none(value: float) -> float | None:
 def _save_plot(result: RunResult, mission: Mission, path: Path) -> None:
     import matplotlib.pyplot as plt
 
-    from sarlink.plots import plot_run
+    from sarlink.plots import plot_network, plot_run
 
-    fig, ax = plt.subplots(figsize=(7, 7), layout="constrained")
+    fig, (ax, hops) = plt.subplots(2, 1, figsize=(7, 9.5), height_ratios=(7, 2.5),
+                                   layout="constrained")
     try:
         plot_run(result, mission, ax=ax)
+        plot_network(result, mission, ax=hops)
         fig.savefig(path, dpi=150)
     finally:
         plt.close(fig)
+
+
+def _when(times: np.ndarray, values: np.ndarray, text: str) -> str:
+    """``text`` and the first checkpoint at which ``values`` was largest."""
+    return f"{text}, first at {times[int(np.nanargmax(values))]:g} s"
 
 
 @mission_flags("simulate")
@@ -73,6 +81,9 @@ def simulate(
         # null, not NaN, when the run stopped before the horizon: JSON has no NaN
         "t_reachable": _finite_or_none(result.t_reachable()),
         "connected_fraction": _finite_or_none(result.connected_fraction()),
+        # the BS's network at the checkpoints: null where not recorded (docs/model.md)
+        "depth_max": _finite_or_none(float(np.nanmax(result.depth, initial=-np.inf))),
+        "farthest_max": _finite_or_none(float(np.nanmax(result.farthest, initial=-np.inf))),
     }
     region = mission.region
     if region is not None and region.anchor is not None:  # on the map: where to look
@@ -106,6 +117,13 @@ def simulate(
         table.add_row("target reachable", f"{out['t_reachable']:g} s "
                       f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
         table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
+    if out["depth_max"] is not None:
+        hops = round(out["depth_max"])
+        table.add_row("BS's network, deepest", _when(
+            result.checkpoints, result.depth, f"{hops} hop{'' if hops == 1 else 's'}"))
+        table.add_row("farthest connected drone", _when(
+            result.checkpoints, result.farthest,
+            f"{out['farthest_max']:.0f} m (r_c = {mission.channel.rc:g} m)"))
     console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")

@@ -24,6 +24,8 @@ _MEASURES: list[tuple[str, str]] = [
     ("search share", "search_share"),
     ("target reachability", "reachability"),
     ("drones connected", "connected"),
+    ("BS's network depth (hops)", "depth"),
+    ("farthest connected drone (m)", "farthest"),
 ]
 """Row label and column of each measure printed, formatted as :data:`sarlink.metrics.MEASURES`
 says."""

@@ -102,12 +102,14 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
     goal_x, goal_y = np.full(n, np.nan), np.full(n, np.nan)  # that point, on a polygon area
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
-                      spread, radio_nominal(p, rp), wp, wp_next, wp_end, rng_rule)
+                      spread, radio_nominal(p, rp), wp, wp_next, wp_end, rng_rule,
+                      np.zeros(1, dtype=np.int64))
     ws = rule_prepare(p, obs)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
+    depth, farthest = np.full(cp_steps.shape[0], np.nan), np.full(cp_steps.shape[0], np.nan)
     acc_reach = acc_conn = 0.0
     ci = 0
     t_det = t_not = NEVER
@@ -147,6 +149,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                 t_not = t
             reachable, connected = graph.reachability(adj, routed, mode, p.reachability,
                                                       p.parked)
+            for c in range(due, ci):  # this step's checkpoints (mostly none): the BS's network
+                depth[c], farthest[c] = records.network(adj, mode, px, py, p.bs_x, p.bs_y)
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
@@ -168,6 +172,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                   p.dt * connected / n)
             if SCANS_RANGES and scanning:
                 critical_ranges.carry_scan(k + 1, p, cp_steps, ci, sc)
+            elif not p.trace:  # the graph is fixed too: the BS's network repeats
+                d, f = records.network(adj, mode, px, py, p.bs_x, p.bs_y)
+                depth[ci:] = d
+                farthest[ci:] = f
             ci = cp_steps.shape[0]
             break
 
@@ -203,4 +211,4 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
                                    traj_route[:kk], traj_mode[:kk], traj_links[:kk]),
-                     at_ranges)
+                     at_ranges, depth, farthest, obs.work[0])

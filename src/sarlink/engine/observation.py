@@ -60,3 +60,7 @@ class Observation(NamedTuple):
     rng: np.random.Generator
     """The rule's own random stream, from ``(seed, run)`` only (no other part of the run draws
     from it, so a rule's draws change nothing else): draw from it in the hooks."""
+    work: np.ndarray
+    """A counter a rule may add its work to (int64, one element; writable): the kernel returns
+    it as ``RunRecord.work``, so that what a rule computes can be counted independently of
+    how fast it runs (ConB counts the nodes its route predictions expand, Fig. 1)."""

@@ -13,7 +13,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from sarlink.engine.graph import has
+from sarlink.engine.graph import add, has, lowest
 from sarlink.engine.params import LANDED, PER_PERIOD
 
 NEVER = -1.0
@@ -62,6 +62,16 @@ class RunRecord(NamedTuple):
     at_ranges: AtRanges
     """The records at each range of a flight scanned at several ranges (then the run's own
     notification, immediacy and records above are not kept)."""
+    depth: np.ndarray
+    """The BS's network at each checkpoint (:func:`network`): the most hops from the BS to an
+    airborne drone with a route; NaN after a stop, and throughout a range scan or a traced
+    flight, which build no graph of their own."""
+    farthest: np.ndarray
+    """The distance from the BS of the farthest airborne drone with a route at each
+    checkpoint, m (0: none); NaN where ``depth`` is."""
+    work: int
+    """The work the rule counted in ``obs.work`` (ConB: the nodes its route predictions
+    expanded); 0 for a rule that counts none."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -122,6 +132,57 @@ def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarra
         conn_cum[ci] = acc_conn
         ci += 1
     return ci
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def network(adj: np.ndarray, mode: np.ndarray, px: np.ndarray, py: np.ndarray, bs_x: float,
+            bs_y: float) -> tuple[int, float]:
+    """The BS's network of this step: its depth, the largest hop count from the BS to an
+    airborne drone with a route, and the distance from the BS of the farthest such drone (0 and
+    0.0 when there is none).
+
+    Parked drones (``LANDED``) are part of the BS: hop 0, so a drone linked to one is one hop
+    out. A search level by level over the bitsets, from the BS and the parked drones, never
+    through the target (node ``N + 1``). The kernel calls it at its checkpoints only.
+    """
+    n = mode.shape[0]
+    nw = adj.shape[1]
+    reached = np.zeros(nw, dtype=np.uint64)
+    level = np.zeros(nw, dtype=np.uint64)
+    add(reached, n)
+    add(level, n)
+    for i in range(n):
+        if mode[i] == LANDED:
+            add(reached, i)
+            add(level, i)
+    add(reached, n + 1)  # the target relays nothing
+    nxt = np.zeros(nw, dtype=np.uint64)
+    depth = 0
+    far = 0.0
+    while True:
+        for w in range(nw):
+            nxt[w] = 0
+        for w in range(nw):
+            bits = level[w]
+            while bits:
+                a = w * 64 + lowest(bits)
+                bits &= bits - np.uint64(1)
+                for v in range(nw):
+                    nxt[v] |= adj[a, v] & ~reached[v]
+        found = False
+        for w in range(nw):
+            found |= nxt[w] != 0
+            reached[w] |= nxt[w]
+            level[w] = nxt[w]
+        if not found:
+            return depth, far
+        depth += 1
+        for w in range(nw):  # every new node is an airborne drone
+            bits = nxt[w]
+            while bits:
+                a = w * 64 + lowest(bits)
+                bits &= bits - np.uint64(1)
+                far = max(far, math.hypot(px[a] - bs_x, py[a] - bs_y))
 
 
 @njit(cache=True, error_model="numpy")

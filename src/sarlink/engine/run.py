@@ -197,6 +197,15 @@ class Prepared:
         return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
                           traj)
 
+    def run_record(self, seed: int = 0, run: int = 0) -> RunRecord:
+        """The kernel's own record of run ``run`` (with that run's own routes if the steering
+        makes them per run): what :meth:`run` returns and what it leaves out, such as the work
+        the rule counted (``RunRecord.work``, Fig. 1)."""
+        if self.steering.per_run is not None:
+            return self._own(seed, run).run_record(seed, run)
+        streams, scenario = self._start(seed, run, None)
+        return self.record(streams, scenario)
+
     @property
     def range_free(self) -> bool:
         """Whether the team flies the same at every communication range, as the seams declare
@@ -275,7 +284,8 @@ class Prepared:
                 immediate=t_notify is not None and t_notify == rec.t_detect,
                 detector=None if rec.detector < 0 else rec.detector,
                 checkpoints=rec.checkpoints, reach_cum=at.reach_cum[j],
-                connected_cum=at.conn_cum[j], **stairs))
+                connected_cum=at.conn_cum[j], depth=rec.depth, farthest=rec.farthest,
+                **stairs))
         return out
 
 def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
@@ -287,7 +297,7 @@ def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
         t_notify=None if rec.t_notify < 0 else rec.t_notify,
         immediate=rec.immediate, detector=None if rec.detector < 0 else rec.detector,
         checkpoints=rec.checkpoints, reach_cum=rec.reach_cum, connected_cum=rec.conn_cum,
-        trajectory=trajectory,
+        depth=rec.depth, farthest=rec.farthest, trajectory=trajectory,
     )
 
 

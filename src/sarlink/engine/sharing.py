@@ -118,11 +118,11 @@ def reporting_twin(base: RunResult, base_mission: Prepared, twin: Prepared) -> R
     if base.t_detect is not None and base_mission.params.stop != HORIZON and (
             twin.params.stop == HORIZON):
         return None  # the base ended at the detection, the twin flies on
-    reach, conn = base.reach_cum, base.connected_cum
+    records: tuple[np.ndarray, ...] = (base.reach_cum, base.connected_cum, base.depth,
+                                       base.farthest)
     if base.t_detect is not None and twin.params.stop != HORIZON:
         after = base.checkpoints > base.t_detect
-        reach, conn = reach.copy(), conn.copy()
-        reach[after] = np.nan
-        conn[after] = np.nan
-    return replace(base, reach_cum=reach, connected_cum=conn, notify_times=None,
-                   notify_rc2=None)
+        records = tuple(np.where(after, np.nan, values) for values in records)
+    reach, conn, depth, farthest = records
+    return replace(base, reach_cum=reach, connected_cum=conn, depth=depth, farthest=farthest,
+                   notify_times=None, notify_rc2=None)

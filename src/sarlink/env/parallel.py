@@ -34,7 +34,8 @@ def result_info(result: RunResult) -> dict[str, Any]:
             "t_detect": result.t_detect, "t_notify": result.t_notify,
             "detector": result.detector, "immediate": result.immediate,
             "checkpoints": result.checkpoints[upto], "reach_cum": result.reach_cum[upto],
-            "connected_cum": result.connected_cum[upto]}
+            "connected_cum": result.connected_cum[upto], "depth": result.depth[upto],
+            "farthest": result.farthest[upto]}
 
 
 class SarlinkParallelEnv(ParallelEnv[str, np.ndarray, Any]):

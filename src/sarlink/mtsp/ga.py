@@ -20,19 +20,21 @@ __all__ = ["solve_ga"]
 def solve_ga(
     points: np.ndarray, depot: tuple[float, float], salesmen: int, objective: Objective,
     min_cells: int, population: int, iterations: int, seed: int,
-) -> tuple[tuple[tuple[int, ...], ...], np.ndarray]:
-    """Tours (point indices per salesman) and the best cost of each iteration's population.
+) -> tuple[tuple[tuple[int, ...], ...], np.ndarray, int]:
+    """Tours (point indices per salesman), the best cost of each iteration's population and
+    the number of individuals costed (the GA's evaluations, Fig. 1).
 
     ``population`` must be a multiple of 8 (Kirk's groups); the arguments are checked by
     :func:`sarlink.mtsp.solve`.
     """
     rng = np.random.default_rng(seed)
-    route, breaks, history = _ga_kernel(distance_matrix(points, depot), salesmen, min_cells,
-                                        population, iterations, objective == "minmax", rng)
+    route, breaks, history, evaluations = _ga_kernel(
+        distance_matrix(points, depot), salesmen, min_cells, population, iterations,
+        objective == "minmax", rng)
     bounds = [0, *breaks.tolist(), len(points)]
     tours = tuple(tuple(int(c) - 1 for c in route[bounds[s]:bounds[s + 1]])
                   for s in range(salesmen))
-    return tours, history
+    return tours, history, int(evaluations)
 
 
 @njit(cache=True, inline="always")
@@ -139,12 +141,14 @@ def _shuffle(x: np.ndarray, rng: np.random.Generator) -> None:
 def _ga_kernel(
     dmat: np.ndarray, salesmen: int, min_tour: int, pop_size: int, iterations: int,
     minmax: bool, rng: np.random.Generator,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
     """Kirk's ``mtspf_ga``: the depot is city 0, the cities 1..n are permuted and split.
 
     An individual is a permutation ``route`` of 1..n and sorted ``breaks``: salesman ``s``
     visits ``route[breaks[s-1]:breaks[s]]`` (with 0 and n at the ends). Returns the best route,
-    its breaks and the best cost in each iteration's population.
+    its breaks, the best cost in each iteration's population and the number of evaluations:
+    individuals costed, one per individual of every iteration's population, as Kirk's GA
+    costs them (each group's best, whose cost is carried over here, included).
 
     Children are costed as they are made, from what they share with a costed individual
     (:func:`_measure`): the group's best keeps its cost, a route move keeps the lengths of
@@ -163,10 +167,12 @@ def _ga_kernel(
     pop_brk = np.empty((pop_size, n_breaks), dtype=np.int64)
     pop_len = np.empty((pop_size, salesmen))  # every individual's tour lengths
     costs = np.empty(pop_size)
+    evaluations = 0
     for p in range(pop_size):
         pop_rte[p] = rng.permutation(n) + 1
         _random_breaks(pop_brk, p, n, min_tour, cum_prob, scratch, adjust, rng)
         costs[p] = _measure(dmat, pop_rte, pop_brk, pop_len, p, pop_len, p, 0, n - 1, minmax)
+        evaluations += 1
     new_rte = np.empty_like(pop_rte)
     new_brk = np.empty_like(pop_brk)
     new_len = np.empty_like(pop_len)
@@ -199,6 +205,7 @@ def _ga_kernel(
                 i, j = j, i
             for c in range(8):
                 k = g + c
+                evaluations += 1  # child k's cost, measured or carried below
                 for q in range(n):
                     new_rte[k, q] = pop_rte[b, q]
                 for q in range(n_breaks):
@@ -238,4 +245,4 @@ def _ga_kernel(
         pop_brk, new_brk = new_brk, pop_brk
         pop_len, new_len = new_len, pop_len
         costs, new_costs = new_costs, costs
-    return best_rte, best_brk, history
+    return best_rte, best_brk, history, evaluations

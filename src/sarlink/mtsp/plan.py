@@ -39,6 +39,9 @@ class MtspPlan:
     each group survives, so it never rises); empty for OR-Tools."""
     seconds: float = 0.0
     """Wall time of the solve that produced the plan (kept when the plan is read from cache)."""
+    evaluations: int | None = None
+    """GA: the individuals costed, population × iterations (Fig. 1's work count, which does
+    not depend on the machine); None for the other solvers and for a plan read from cache."""
     lengths: np.ndarray = field(init=False)
     """Per salesman the tour length in metres, including the legs from and to the depot."""
 

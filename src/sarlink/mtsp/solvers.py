@@ -99,16 +99,18 @@ def solve(
     steps = budget_of(solver, objective, k, salesmen, iterations, budget)
 
     start = time.perf_counter()
+    evaluations = None
     if solver == "ga":
-        tours, history = solve_ga(pts, dep, salesmen, objective, min_cells,
-                                  population // 8 * 8, iterations, seed)
+        tours, history, evaluations = solve_ga(pts, dep, salesmen, objective, min_cells,
+                                               population // 8 * 8, iterations, seed)
     elif objective == "minmax":
         tours = solve_minmax(pts, dep, salesmen, min_cells, seed, iterations=steps)
         history = np.empty(0)
     else:
         tours, history = solve_ortools(pts, dep, salesmen, min_cells, steps), np.empty(0)
     return MtspPlan(points=pts, depot=dep, tours=tours, min_cells=min_cells, solver=solver,
-                    objective=objective, history=history, seconds=time.perf_counter() - start)
+                    objective=objective, history=history, seconds=time.perf_counter() - start,
+                    evaluations=evaluations)
 
 
 def _check_int(name: str, value: Any, lo: int, hi: int | None, hi_text: str = "") -> None:

@@ -44,15 +44,17 @@ from sarlink.paper.experiments import (
 )
 from sarlink.planners import get_planner, planner_names
 
-__all__ = ["FIGURES", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6", "fig7",
-           "fig8", "fig9", "fig10", "save"]
+__all__ = ["FIGURES", "RELAYING", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6",
+           "fig7", "fig8", "fig9", "fig10", "network_values", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
 
-P_S, P_D, IMMEDIATE, MISSION_TIME, SEARCH_SHARE, REACHABILITY = (
+P_S, P_D, IMMEDIATE, MISSION_TIME, SEARCH_SHARE, REACHABILITY, DEPTH, FARTHEST = (
     MEASURES[c] for c in ("P_s", "P_d", "immediate", "mission_time", "search_share",
-                          "reachability"))
+                          "reachability", "depth", "farthest"))
+RELAYING = ("conb", "mtsp-conb", "concov")
+"""The planners whose drones keep links to pass the news on: ConB and the hybrids."""
 
 
 def _band(measure: Measure, rows: pd.DataFrame) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -401,14 +403,32 @@ def _values(rows: pd.DataFrame, keys: Sequence[str], measures: Sequence[Measure]
 _VERSUS_KEYS = ["rc", "planner", "drones"]
 
 
+def _count(value: float) -> str:
+    """A work count as printed: ``–`` for none (a planner without that part)."""
+    return f"{value:,.0f}" if value > 0 else "–"
+
+
 def _fig1_values(plan_times: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
     stats = _plan_time_stats(plan_times)
+    # the counts are the same in every repeat (the same plan and run): their median
+    counts = (plan_times.groupby(["planner", "drones"], sort=False)[["expansions", "evaluations"]]
+              .median().reindex(pd.MultiIndex.from_frame(stats[["planner", "drones"]])))
     return [("", pd.DataFrame({
         "planner": stats["planner"].map(_label), "N_m": stats["drones"],
         "median (s)": stats["median"].map("{:.4g}".format),
         "min (s)": stats["min"].map("{:.4g}".format),
         "max (s)": stats["max"].map("{:.4g}".format), "repeats": stats["count"],
+        "search expansions": [_count(v) for v in counts["expansions"]],
+        "GA evaluations": [_count(v) for v in counts["evaluations"]],
     }).reset_index(drop=True))]
+
+
+def network_values(main: pd.DataFrame, drones: Sequence[int]) -> pd.DataFrame:
+    """The BS's network of the relaying planners (:data:`RELAYING`) with ``drones`` drones at
+    every t_d of the main table, as text: the mean depth in hops and the mean distance of the
+    farthest connected drone, the numbers by which a reader judges whether chains form."""
+    rows = main[main["planner"].isin(RELAYING) & main["drones"].isin(drones)]
+    return _values(rows, ["rc", "planner", "drones", "td"], [DEPTH, FARTHEST])
 
 
 def _fig2_values(curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
@@ -465,8 +485,10 @@ class FigureSpec:
 
 FIGURES = {f.number: f for f in (
     FigureSpec(1, "Plan computation time against the number of drones, r_c = 500 m "
-               "(median of the repeats; band: their range).", ("plan_times",), fig1,
-               _fig1_values),
+               "(median of the repeats; band: their range). Its values list the work counted "
+               "beside the time, which does not depend on the machine: the nodes the "
+               "connectivity checks' searches expanded over the whole plan, and the GA's "
+               "evaluations.", ("plan_times",), fig1, _fig1_values),
     FigureSpec(2, "Probability that the target information reaches the BS within t_d against "
                "t_d, for N_m = 10 and 22.", ("curve",), fig2, _fig2_values),
     FigureSpec(3, f"Probability that the target information reaches the BS within t_d against "

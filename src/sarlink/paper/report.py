@@ -36,7 +36,7 @@ from sarlink.paper.experiments import (
     TD_LONG,
     TD_SHORT,
 )
-from sarlink.paper.figures import FIGURES
+from sarlink.paper.figures import FIGURES, RELAYING, network_values
 from sarlink.paper.findings import CLAIMS, Finding, tally
 from sarlink.planners import PAPER_PLANNERS, get_planner
 
@@ -310,6 +310,29 @@ def _figures(out: Path, figures: dict[int, Path], tables: dict[str, pd.DataFrame
     return blocks
 
 
+NETWORK_DRONES = (6, 10, 22)
+"""The team sizes of the report's open table of the BS's network (the others are folded)."""
+
+
+def _network(tables: dict[str, pd.DataFrame]) -> list[_Block]:
+    """Whether the relaying planners form chains: the BS's network at each t_d."""
+    if "main" not in tables:
+        return []
+    labels = ", ".join(get_planner(p).label for p in RELAYING)
+    main = tables["main"]
+    return [_Heading("The BS's network: do chains form?", 2), _Para(
+        f"The paper's case for {labels} is multihop connectivity: drones that pass the news to "
+        "the BS through each other. At each t_d, over the runs of Figs. 2–6: the depth of the "
+        "BS's connected component (the most hops from the BS to an airborne drone with a "
+        "route; drones parked at the BS are part of it) and the distance from the BS of the "
+        "farthest airborne drone with a route. A team that never relays is a single-hop star: "
+        "depth at most 1, its farthest connected drone within r_c. Up to N_r = "
+        f"{Mission().team.nr} drones mTSP-ConB flies mTSP's plan, whose flights are scanned at "
+        "every range without a graph of their own (–)."),
+        _Table(network_values(main, NETWORK_DRONES)),
+        _Table(network_values(main, DRONES), "Every team size")]
+
+
 def _beyond(tables: dict[str, pd.DataFrame]) -> list[_Block]:
     if "report" not in tables or "main" not in tables:
         return []
@@ -362,6 +385,7 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
     first = [_Para(first_line(findings, found))] if findings else []
     return [_Heading("Reproduction of the paper's evaluation", 1), *first, _Para(intro),
             *_claims(findings, tables, reading, presets, found), *_sensitivity(sensitivity),
+            *_network(tables),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
             *_beyond(tables), *_others(tables), *_figures(out, figures, tables),

@@ -6,7 +6,8 @@ Layout of the output folder::
                            the sweeps, one per planner and the reading's choices that reach
                            it (sarlink.sweep folders: resumable, loadable with load; shared
                            by readings and by the sensitivity analysis)
-    plan_times.json        Fig. 1's measured plan times, with their setting and machine
+    plan_times.json        Fig. 1's measured plan times and work counts, with their
+                           setting and machine
     tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
                            plan_times, mtsp_plans, report, report_curve, others (the
                            planners beyond the paper), and sensitivity (claim × single
@@ -48,7 +49,7 @@ from sarlink.paper.variants import (
     sensitivity,
 )
 from sarlink.planners import PAPER_PLANNERS, get_planner
-from sarlink.plantime import plan_seconds
+from sarlink.plantime import plan_cost
 from sarlink.playback import compare
 from sarlink.progress import progress as progress_bars
 from sarlink.simulation import simulate
@@ -101,10 +102,13 @@ def _figure_numbers(figures: Iterable[int] | None) -> list[int]:
 
 def _plan_times(path: Path, missions: list[Mission], repeats: int, progress: bool
                 ) -> pd.DataFrame:
-    """Fig. 1's plan times: read from ``path`` if measured there for the same missions and
-    repeats, otherwise measured now (one mission at a time, nothing else running) and stored."""
+    """Fig. 1's plan times and work counts (:class:`sarlink.plantime.PlanCost`): read from
+    ``path`` if measured there for the same missions and repeats, otherwise measured now (one
+    mission at a time, nothing else running) and stored."""
+    # CPU time (plantime) and the work counts; timings of another clock, or without the
+    # counts, are redone
     setting = {"missions": [m.model_dump(mode="json") for m in missions], "repeats": repeats,
-               "clock": "process"}  # CPU time (plantime); timings of another clock are redone
+               "clock": "process", "counts": ["expansions", "evaluations"]}
     if path.exists():
         stored = json.loads(path.read_text())
         if stored.get("setting") == setting:
@@ -114,8 +118,10 @@ def _plan_times(path: Path, missions: list[Mission], repeats: int, progress: boo
         shown = bars.add_task("timing the plans of Fig. 1", total=len(missions) * repeats)
         for m in missions:
             for k in range(repeats):
+                cost = plan_cost(m)
                 rows.append({"planner": m.team.planner, "drones": m.team.drones,
-                             "rc": m.channel.rc, "repeat": k, "seconds": plan_seconds(m)})
+                             "rc": m.channel.rc, "repeat": k, "seconds": cost.seconds,
+                             "expansions": cost.expansions, "evaluations": cost.evaluations})
                 bars.advance(shown, 1)
     temporary = path.with_suffix(".tmp")
     temporary.write_text(json.dumps({"setting": setting, "machine": machine(), "rows": rows},

@@ -5,6 +5,7 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Circle
+from matplotlib.ticker import MaxNLocator
 
 from sarlink.config import Mission
 from sarlink.engine.codes import Mode
@@ -48,9 +49,56 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         ax.plot(traj.positions[k, relay, 0], traj.positions[k, relay, 1], marker="s", ms=8,
                 mfc="none", mec="tab:green", mew=2, ls="none",
                 label=f"BS notified at t = {result.t_notify:g} s")
+    farthest = _farthest_drone(result, (bx, by))
+    if farthest is not None:
+        t, (x, y), distance = farthest
+        ax.plot(x, y, marker="o", ms=10, mfc="none", mec="tab:purple", mew=2, ls="none",
+                label=f"farthest connected drone: {distance:.0f} m at t = {t:g} s")
     label = mission.team.planner
     ax.set(xlabel="x (m)", ylabel="y (m)",
            title=f"{label}, N = {mission.team.drones}, r_c = {mission.channel.rc:g} m, "
                  f"seed {result.seed}, run {result.run}")
     ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    return ax
+
+
+def _farthest_drone(result: RunResult, bs: tuple[float, float]
+                    ) -> tuple[float, np.ndarray, float] | None:
+    """When and where the run's farthest connected drone was, as its checkpoints recorded it
+    (the first checkpoint at the largest ``farthest``), and how far from the BS at ``bs``;
+    None if no airborne drone ever had a route at a checkpoint."""
+    traj = result.trajectory
+    if traj is None or not np.nanmax(result.farthest, initial=0.0) > 0:
+        return None
+    c = int(np.nanargmax(result.farthest))
+    t = float(result.checkpoints[c])
+    k = int(np.searchsorted(traj.t, t))
+    routed = traj.bs_route[k] & (traj.mode[k] != Mode.LANDED)
+    distance = np.where(routed, np.hypot(*(traj.positions[k] - np.asarray(bs)).T), -1.0)
+    return t, traj.positions[k, int(np.argmax(distance))], float(result.farthest[c])
+
+
+def plot_network(result: RunResult, mission: Mission, ax: plt.Axes | None = None) -> plt.Axes:
+    """Draw the BS's network over a run at its checkpoints on ``ax`` (a new figure if None):
+    the depth of the BS's component in hops (left axis) and the distance from the BS of the
+    farthest connected drone, beside ``r_c`` (right axis). A team that relays nothing stays a
+    single-hop star: one hop, its farthest connected drone within ``r_c``."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 2.5), layout="constrained")
+    t = result.checkpoints
+    # snapshots at the checkpoints: each drawn about its checkpoint, the last one too
+    ax.step(t, result.depth, where="mid", color="tab:green", marker=".", ms=4,
+            label="hops from the BS (depth)")
+    ax.set(xlabel="t (s)", ylabel="hops", xlim=(0, t[-1]))
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))
+    far = ax.twinx()
+    far.plot(t, result.farthest, color="tab:purple", lw=1.2, marker=".", ms=4,
+             label="farthest connected drone")
+    far.axhline(mission.channel.rc, color="tab:blue", ls="--", lw=0.8,
+                label=f"r_c = {mission.channel.rc:g} m")
+    far.set(ylabel="distance from the BS (m)", ylim=(0, None))
+    lines = [*ax.get_lines(), *far.get_lines()]
+    ax.legend(lines, [str(line.get_label()) for line in lines], loc="lower left",
+              bbox_to_anchor=(0.0, 1.0), ncols=3, fontsize=8, frameon=False)  # above the data
+    ax.set_ylim(0, max(float(np.nanmax(result.depth, initial=0.0)), 1.0) + 0.5)
     return ax

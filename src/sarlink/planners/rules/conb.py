@@ -86,7 +86,7 @@ def predict_routes(
     pz: np.ndarray, p: Params, steps: int, qx: np.ndarray, qy: np.ndarray, disc2: np.ndarray,
     out: np.ndarray, expanded: np.ndarray, on_route: np.ndarray, wp: np.ndarray,
     wp_next: np.ndarray, wp_end: np.ndarray, goal: np.ndarray,
-) -> None:
+) -> int:
     """Who reaches the BS ``steps`` increments ahead if every node keeps its heading
     (shadow-free range); with ``mtsp_prediction = paths`` a searching drone on a route
     (``on_route``, waypoints ``wp[wp_next[j]:wp_end[j]]``) flies on along it instead.
@@ -97,7 +97,8 @@ def predict_routes(
     ``goal`` holds every node. A ConB team mostly flies within range of the BS, whose links
     alone then reach everyone: one node's links instead of every node's. The nodes still to
     expand are ``out & ~expanded``, a bitset rather than a stack, so that the nodes reached
-    by the last expansion cost nothing when the search stops there.
+    by the last expansion cost nothing when the search stops there. Returns the number of
+    nodes expanded: the search's work, counted for Fig. 1.
     """
     n = hx.shape[0]
     m = n + 2
@@ -119,6 +120,7 @@ def predict_routes(
     add(out, n + 1)
     add(expanded, n + 1)  # the target relays nothing
     w = 0
+    expansions = 0
     while w < nw and not covers(out, goal):
         pending = out[w] & ~expanded[w]
         if not pending:
@@ -126,6 +128,7 @@ def predict_routes(
             continue
         a = w * 64 + lowest(pending)
         add(expanded, a)
+        expansions += 1
         xa, ya, za = qx[a], qy[a], pz[a]
         disc2_a = disc2[a]
         for v in range(nw):
@@ -138,6 +141,7 @@ def predict_routes(
             out[v] |= row
         w = 0  # the new nodes may lie in any word
     drop(out, n + 1)
+    return expansions
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -167,9 +171,10 @@ def check_continuously(k: int, p: Params, obs: Observation, ws: Workspace, decid
     n = obs.hx.shape[0]
     first_nodes(ws.routed_next, n + 2)  # before the first search: every node
     for s in range(p.ts_steps if on else 0, 0, -1):
-        predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, s, ws.qx, ws.qy,
-                       ws.disc2, ws.routed_step, ws.expanded, obs.on_route, obs.wp, obs.wp_next,
-                       obs.wp_end, ws.routed_next)
+        obs.work[0] += predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, s,
+                                      ws.qx, ws.qy, ws.disc2, ws.routed_step, ws.expanded,
+                                      obs.on_route, obs.wp, obs.wp_next, obs.wp_end,
+                                      ws.routed_next)
         for w in range(ws.routed_next.shape[0]):
             ws.routed_next[w] &= ws.routed_step[w]
     any_deciding = False
@@ -294,9 +299,10 @@ def directions(p: Params, obs: Observation, ws: Workspace, deciding: np.ndarray,
     unless the continuous check already did."""
     if p.conb_check != CONTINUOUS:
         first_nodes(ws.routed_step, obs.hx.shape[0] + 2)  # the goal: every node
-        predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p, p.ts_steps, ws.qx,
-                       ws.qy, ws.disc2, ws.routed_next, ws.expanded, obs.on_route, obs.wp,
-                       obs.wp_next, obs.wp_end, ws.routed_step)
+        obs.work[0] += predict_routes(obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.pz, p,
+                                      p.ts_steps, ws.qx, ws.qy, ws.disc2, ws.routed_next,
+                                      ws.expanded, obs.on_route, obs.wp, obs.wp_next,
+                                      obs.wp_end, ws.routed_step)
     conb_headings(deciding, obs.px, obs.py, obs.hx, obs.hy, obs.mode, obs.adj, ws.routed_next,
                   p, obs.rc, no_term, vx, vy, obs.rng)
 
