@@ -21,6 +21,15 @@ EARLIER_CHOICES = {"takeoff": "even", "conb_fallback": "contact", "covb_directio
           "shadow_calibration": "median"}
 """The choices sarlink made before they were named: the older presets keep them."""
 
+_SARLINK_3 = {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
+              "concov_fallback": "connectivity", "concov_connected": "heading",
+              "takeoff": "jitter", "conb_fallback": "contact", "covb_direction": "push",
+              "shadowing": "correlated", "reachability": "multihop", "mtsp_plan": "per-run",
+              "mtsp_prediction": "paths", "turns": "exact", "parked": "relay",
+              "shadow_calibration": "median"}
+"""``sarlink-3``'s choices, which ``sarlink-4`` changes in three."""
+
+
 @dataclass(frozen=True)
 class Reading:
     """One named set of choices."""
@@ -79,11 +88,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         "one GA plan per run, so that mTSP's figures average over the GA's outcomes, not one "
         "draw; mTSP-ConB's ConB drones predict the mTSP drones along their paths (Algorithm "
         "1's input {P_N}); Fig. 3 at t_d = 2000 s",
-        {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
-         "concov_fallback": "connectivity", "concov_connected": "heading", "takeoff": "jitter",
-         "conb_fallback": "contact", "covb_direction": "push", "shadowing": "correlated",
-         "reachability": "multihop", "mtsp_plan": "per-run", "mtsp_prediction": "paths",
-         "turns": "exact", "parked": "relay", "shadow_calibration": "median"},
+        _SARLINK_3,
         td_fig3=2000.0,
     ),
     Reading(
@@ -98,11 +103,7 @@ READINGS: dict[str, Reading] = {r.name: r for r in (
         "be connected to the BS over a multihop link'); r_c the range of the path loss "
         "alone under shadowing (Section 4.3: 'we change the channel to log-normal "
         "shadowing', Eq. 13 adds S to the same path loss); Fig. 3 at t_d = 2000 s",
-        {"conb_check": "continuous", "contacts": "routed", "isolated": "keep",
-         "concov_fallback": "connectivity", "concov_connected": "heading", "takeoff": "jitter",
-         "conb_fallback": "limit", "covb_direction": "push", "shadowing": "correlated",
-         "reachability": "multihop", "mtsp_plan": "per-run", "mtsp_prediction": "paths",
-         "turns": "jitter", "parked": "base", "shadow_calibration": "median"},
+        {**_SARLINK_3, "turns": "jitter", "conb_fallback": "limit", "parked": "base"},
         td_fig3=2000.0,
     ),
 )}
