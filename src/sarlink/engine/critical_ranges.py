@@ -50,7 +50,7 @@ from numba import njit
 from sarlink.engine import graph, records, sensing
 from sarlink.engine.codes import Reachability
 from sarlink.engine.geometry import FAR, PAD, d2
-from sarlink.engine.params import LANDED, PARKED_BASE, STOP_DETECTED, STOP_NOTIFIED, Params
+from sarlink.engine.params import PARKED_BASE, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.radios import lognormal
 
 _DIRECT = int(Reachability.DIRECT)
@@ -224,12 +224,6 @@ def _observe(k: int, last: int, positions: np.ndarray, px: np.ndarray, py: np.nd
     return sensing.sense(px, py, k, p, in_range, pass_start, sensed, rng_look)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def _parked(p: Params, mode: int) -> bool:
-    """Whether a drone in ``mode`` is part of the BS (``readings.parked = base``)."""
-    return p.parked == PARKED_BASE and mode == LANDED
-
-
 @njit(cache=True, error_model="numpy")
 def critical(p: Params, unit: Params, target_x: float, target_y: float, positions: np.ndarray,
              modes: np.ndarray, end: int, rng_shadow: np.random.Generator,
@@ -281,7 +275,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             _tree(key, n, order, parent, up_key, best, joined, routed)
             reach_key = key[n + 1, n] if p.reachability == _DIRECT else _INF
             for i in range(n):
-                if p.reachability == _DIRECT or not _parked(p, modes[row, i]):
+                if p.reachability == _DIRECT or not graph.part_of_bs(p.parked, modes[row, i]):
                     reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
         if det_step >= 0:
             # knowledge: sources are the drones that sensed (key 0) or knew (their key); a
@@ -312,7 +306,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             reachable[r] = reach_key <= r2
             connected[r] = 0
             for i in range(n):
-                if routed[i] <= r2 and not _parked(p, modes[row, i]):
+                if routed[i] <= r2 and not graph.part_of_bs(p.parked, modes[row, i]):
                     connected[r] += 1
         _close_step(k, p, det_step, notified, going, reachable, connected, acc_reach,
                     acc_conn, n)
@@ -524,7 +518,7 @@ def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
     toggled = _band_links(px, py, pz, fade, p.sigma > 0.0, sc, near, p.r * p.r, with_near)
     parked = 0
     for i in range(n if p.parked == PARKED_BASE else 0):
-        parked += mode[i] == LANDED
+        parked += graph.part_of_bs(p.parked, mode[i])
     if parked != sc.parked[0]:  # a drone became part of the BS: every range's records move
         sc.parked[0] = parked
         sc.moved[:] = True

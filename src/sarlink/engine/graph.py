@@ -191,6 +191,13 @@ def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.nda
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def part_of_bs(parked: int, mode: int) -> bool:
+    """Whether a drone in ``mode`` counts as part of the BS: landed there, with
+    ``readings.parked = base`` (``parked``, :class:`~sarlink.engine.codes.Parked`)."""
+    return parked == _BASE and mode == _LANDED
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def reachability(adj: np.ndarray, routed: np.ndarray, mode: np.ndarray, how: int = _DIRECT,
                  parked: int = _RELAY) -> tuple[bool, int]:
     """Whether the target has a route to the BS, and how many drones have one.
@@ -207,7 +214,7 @@ def reachability(adj: np.ndarray, routed: np.ndarray, mode: np.ndarray, how: int
     connected = 0
     for i in range(n):
         if has(routed, i):
-            if parked == _BASE and mode[i] == _LANDED:
+            if part_of_bs(parked, mode[i]):
                 reachable |= how == _DIRECT and linked(adj, tg, i)
                 continue
             connected += 1
