@@ -58,14 +58,15 @@ def component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[
     return seen
 
 
-def network(linked: list[list[bool]], parked: list[bool], where: list[tuple[float, float]],
+def network(linked: list[list[bool]], base: list[bool], where: list[tuple[float, float]],
             bs: tuple[float, float]) -> tuple[int, float]:
-    """The BS's network: the most hops from the BS to an airborne drone with a route, and the
-    distance from the BS of the farthest such drone (0 and 0.0 if none). ``linked`` is the
-    adjacency matrix of the drones, the BS (``N``) and the target (``N + 1``, which relays
-    nothing); a parked drone is part of the BS, hop 0. A plain breadth-first search."""
-    n = len(parked)
-    hops = {n: 0, **{i: 0 for i in range(n) if parked[i]}}
+    """The BS's network: the most hops from the BS to a drone with a route that is not part of
+    the BS, and the distance from the BS of the farthest such drone (0 and 0.0 if none).
+    ``linked`` is the adjacency matrix of the drones, the BS (``N``) and the target (``N + 1``,
+    which relays nothing); a drone in ``base`` is part of the BS, hop 0. A plain breadth-first
+    search."""
+    n = len(base)
+    hops = {n: 0, **{i: 0 for i in range(n) if base[i]}}
     queue = deque(hops)
     while queue:
         a = queue.popleft()
@@ -73,9 +74,9 @@ def network(linked: list[list[bool]], parked: list[bool], where: list[tuple[floa
             if linked[a][b] and b not in hops:
                 hops[b] = hops[a] + 1
                 queue.append(b)
-    airborne = [i for i in hops if i < n and not parked[i]]
-    return (max((hops[i] for i in airborne), default=0),
-            max((_dist(where[i], bs) for i in airborne), default=0.0))
+    out = [i for i in hops if i < n and not base[i]]
+    return (max((hops[i] for i in out), default=0),
+            max((_dist(where[i], bs) for i in out), default=0.0))
 
 
 def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) -> NaiveResult:
@@ -276,7 +277,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             positions.append(list(pos))
         if k in checkpoints:
             matrix = [[j in links[i] for j in range(n + 2)] for i in range(n + 2)]
-            hops, far = network(matrix, [mo == "landed" for mo in mode], pos, bs)
+            base = [readings.parked == "base" and mo == "landed" for mo in mode]
+            hops, far = network(matrix, base, pos, bs)
             depth.append(hops)
             farthest.append(far)
         if k == steps:

@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 
 from naive import network as naive_network
 from phase_inputs import pack, words
+from sarlink.engine.codes import Parked
 from sarlink.engine.params import LANDED, PER_PERIOD, REPORTING, RETURNING, SEARCHING
 from sarlink.engine.records import (
     carry_records,
@@ -130,27 +131,33 @@ def _symmetric(n: int, pairs: Iterable[tuple[int, int]]) -> np.ndarray:
 
 def test_the_network_counts_hops_from_the_bs_and_its_parked_drones() -> None:
     """Six drones, the BS (6) and the target (7), counted by hand: 0 is one hop out, 1 two, 2
-    three; drone 3 is parked, part of the BS (linked to it or not), so 4, linked to it, is
-    one hop out; 5 is linked only to the target, which relays nothing, so it has no route.
-    Depth 3; the farthest of 0, 1, 2 and 4 is 4, at 400 m: the farthest need not be the
-    deepest."""
+    three; drone 3 is parked, part of the BS under ``parked = base`` (linked to it or not), so
+    4, linked to it, is one hop out; 5 is linked only to the target, which relays nothing, so
+    it has no route. Depth 3; the farthest of 0, 1, 2 and 4 is 4, at 400 m: the farthest need
+    not be the deepest. Under ``relay`` the parked drone is a drone like any other: with no
+    link to the BS, 3 and 4 have no route; linked to it, 3 is one hop out and 4 two."""
     n, bs = 6, (0.0, 0.0)
     mode = np.array([SEARCHING, SEARCHING, RETURNING, LANDED, REPORTING, SEARCHING],
                     dtype=np.int8)
     px = np.array([100.0, 200.0, 300.0, 0.0, 400.0, 900.0, 0.0, 500.0])
     py = np.zeros(n + 2)
     chain = [(6, 0), (0, 1), (1, 2), (3, 4), (2, 7), (5, 7)]
-    assert network(_symmetric(n, chain), mode, px, py, *bs) == (3, 400.0)
-    assert network(_symmetric(n, [*chain, (6, 3)]), mode, px, py, *bs) == (3, 400.0)
+    base, relay = Parked.BASE, Parked.RELAY
+    assert network(_symmetric(n, chain), mode, base, px, py, *bs) == (3, 400.0)
+    assert network(_symmetric(n, [*chain, (6, 3)]), mode, base, px, py, *bs) == (3, 400.0)
+    assert network(_symmetric(n, chain), mode, relay, px, py, *bs) == (3, 300.0)
+    assert network(_symmetric(n, [*chain, (6, 3)]), mode, relay, px, py, *bs) == (3, 400.0)
     parked = np.full(n, LANDED, dtype=np.int8)  # every drone parked: none airborne
-    assert network(_symmetric(n, chain), parked, px, py, *bs) == (0, 0.0)
+    assert network(_symmetric(n, chain), parked, base, px, py, *bs) == (0, 0.0)
     alone = _symmetric(n, [(2, 7)])  # the BS linked to nothing, no drone parked
-    assert network(alone, np.full(n, SEARCHING, dtype=np.int8), px, py, *bs) == (0, 0.0)
+    searching = np.full(n, SEARCHING, dtype=np.int8)
+    assert network(alone, searching, base, px, py, *bs) == (0, 0.0)
 
 
-@given(n=st.integers(1, 70), p_link=st.floats(0.0, 0.3), seed=st.integers(0, 2**32 - 1))
-def test_the_network_is_the_reference_breadth_first_search(n: int, p_link: float,
-                                                           seed: int) -> None:
+@given(n=st.integers(1, 70), p_link=st.floats(0.0, 0.3), seed=st.integers(0, 2**32 - 1),
+       parked=st.sampled_from(Parked))
+def test_the_network_is_the_reference_breadth_first_search(n: int, p_link: float, seed: int,
+                                                           parked: Parked) -> None:
     """On random graphs of up to 72 nodes (two bitset words), random modes and positions, the
     bitset search level by level gives the depth and farthest distance of the slow
     reference's plain breadth-first search on the adjacency matrix."""
@@ -163,6 +170,7 @@ def test_the_network_is_the_reference_breadth_first_search(n: int, p_link: float
                       p=[0.6, 0.1, 0.2, 0.1]).astype(np.int8)
     px, py = rng.uniform(0.0, 4000.0, m), rng.uniform(0.0, 4000.0, m)
     bs = (float(px[n]), float(py[n]))
-    want = naive_network(linked.tolist(), (mode == LANDED).tolist(),
+    base = (mode == LANDED) & (parked == Parked.BASE)
+    want = naive_network(linked.tolist(), base.tolist(),
                          list(zip(px.tolist(), py.tolist(), strict=True)), bs)
-    assert network(adj, mode, px, py, *bs) == want
+    assert network(adj, mode, int(parked), px, py, *bs) == want

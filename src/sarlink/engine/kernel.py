@@ -150,7 +150,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             reachable, connected = graph.reachability(adj, routed, mode, p.reachability,
                                                       p.parked)
             for c in range(due, ci):  # this step's checkpoints (mostly none): the BS's network
-                depth[c], farthest[c] = records.network(adj, mode, px, py, p.bs_x, p.bs_y)
+                depth[c], farthest[c] = records.network(adj, mode, p.parked, px, py, p.bs_x, p.bs_y)
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
@@ -173,7 +173,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             if SCANS_RANGES and scanning:
                 critical_ranges.carry_scan(k + 1, p, cp_steps, ci, sc)
             elif not p.trace:  # the graph is fixed too: the BS's network repeats
-                d, f = records.network(adj, mode, px, py, p.bs_x, p.bs_y)
+                d, f = records.network(adj, mode, p.parked, px, py, p.bs_x, p.bs_y)
                 depth[ci:] = d
                 farthest[ci:] = f
             ci = cp_steps.shape[0]

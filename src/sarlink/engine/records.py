@@ -13,7 +13,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from sarlink.engine.graph import add, has, lowest
+from sarlink.engine.graph import add, has, lowest, part_of_bs
 from sarlink.engine.params import LANDED, PER_PERIOD
 
 NEVER = -1.0
@@ -135,14 +135,15 @@ def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarra
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def network(adj: np.ndarray, mode: np.ndarray, px: np.ndarray, py: np.ndarray, bs_x: float,
-            bs_y: float) -> tuple[int, float]:
+def network(adj: np.ndarray, mode: np.ndarray, parked: int, px: np.ndarray, py: np.ndarray,
+            bs_x: float, bs_y: float) -> tuple[int, float]:
     """The BS's network of this step: its depth, the largest hop count from the BS to an
-    airborne drone with a route, and the distance from the BS of the farthest such drone (0 and
-    0.0 when there is none).
+    drone with a route that is not part of the BS, and the distance from the BS of the farthest
+    such drone (0 and 0.0 when there is none).
 
-    Parked drones (``LANDED``) are part of the BS: hop 0, so a drone linked to one is one hop
-    out. A search level by level over the bitsets, from the BS and the parked drones, never
+    Drones that are part of the BS (:func:`~sarlink.engine.graph.part_of_bs`: parked, under
+    ``readings.parked = base``) are hop 0, so a drone linked to one is one hop out; under
+    ``relay`` a parked drone is a relay like any other. A search level by level over the bitsets, from the BS and the parked drones, never
     through the target (node ``N + 1``). The kernel calls it at its checkpoints only.
     """
     n = mode.shape[0]
@@ -152,7 +153,7 @@ def network(adj: np.ndarray, mode: np.ndarray, px: np.ndarray, py: np.ndarray, b
     add(reached, n)
     add(level, n)
     for i in range(n):
-        if mode[i] == LANDED:
+        if part_of_bs(parked, mode[i]):
             add(reached, i)
             add(level, i)
     add(reached, n + 1)  # the target relays nothing
