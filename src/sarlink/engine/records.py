@@ -137,14 +137,15 @@ def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarra
 @njit(cache=True, inline="always", error_model="numpy")
 def network(adj: np.ndarray, mode: np.ndarray, parked: int, px: np.ndarray, py: np.ndarray,
             bs_x: float, bs_y: float) -> tuple[int, float]:
-    """The BS's network of this step: its depth, the largest hop count from the BS to an
-    drone with a route that is not part of the BS, and the distance from the BS of the farthest
-    such drone (0 and 0.0 when there is none).
+    """The BS's network of this step: its depth, the largest hop count from the BS to a drone
+    with a route that is not part of the BS, and the distance from the BS of the farthest such
+    drone (0 and 0.0 when there is none).
 
     Drones that are part of the BS (:func:`~sarlink.engine.graph.part_of_bs`: parked, under
     ``readings.parked = base``) are hop 0, so a drone linked to one is one hop out; under
-    ``relay`` a parked drone is a relay like any other. A search level by level over the bitsets, from the BS and the parked drones, never
-    through the target (node ``N + 1``). The kernel calls it at its checkpoints only.
+    ``relay`` a parked drone is a relay like any other. A search level by level over the
+    bitsets, from the BS and the drones part of it, never through the target (node ``N + 1``).
+    The kernel calls it at its checkpoints only.
     """
     n = mode.shape[0]
     nw = adj.shape[1]
