@@ -58,6 +58,7 @@ _DIRECT = int(Reachability.DIRECT)
 _INF = math.inf
 _ZERO = np.uint64(0)
 _ONE = np.uint64(1)
+_NO_KEY = np.empty((0, 0))  # a range scan's graphs are its own (_networks)
 
 
 class Critical(NamedTuple):
@@ -79,6 +80,11 @@ class Critical(NamedTuple):
     """``(ranges, checkpoints)``: the kernel's ``reach_cum`` at each squared range."""
     conn_cum: np.ndarray
     """``(ranges, checkpoints)``: the kernel's ``conn_cum`` at each squared range."""
+    depth: np.ndarray
+    """``(ranges, checkpoints)``: the BS's network's depth at each squared range
+    (:func:`sarlink.engine.records.network`)."""
+    farthest: np.ndarray
+    """``(ranges, checkpoints)``: its farthest drone at each squared range."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -150,6 +156,48 @@ def _tree(key: np.ndarray, n: int, order: np.ndarray, parent: np.ndarray, up_key
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def _toggle(adj: np.ndarray, a: int, b: int) -> None:
+    """Add or remove the link ``a``-``b`` in the adjacency bitsets ``adj``."""
+    adj[a, b >> 6] ^= np.uint64(1) << np.uint64(b & 63)
+    adj[b, a >> 6] ^= np.uint64(1) << np.uint64(a & 63)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _networks(k: int, cp_steps: np.ndarray, ci: int, going: np.ndarray, p: Params,
+              graphs: np.ndarray, key: np.ndarray, r2s: np.ndarray, mode: np.ndarray,
+              px: np.ndarray, py: np.ndarray, depth: np.ndarray, farthest: np.ndarray) -> None:
+    """The BS's network (:func:`sarlink.engine.records.network`) at the checkpoints of step
+    ``k`` (from ``ci``) at every range whose run goes on, as the kernel takes it at its own
+    checkpoints. The graph at range ``r`` is the scan's ``graphs[r]`` or, given the links'
+    ``key`` (a traced flight's), made in ``graphs[0]`` from the keys at most ``r2s[r]``."""
+    if ci >= cp_steps.shape[0] or cp_steps[ci] != k:
+        return  # no checkpoint at this step (mostly)
+    for r in range(going.shape[0]):
+        if not going[r]:
+            continue
+        adj = graphs[r] if key.shape[0] == 0 else _graph_at(key, r2s[r], graphs[0])
+        d, f = records.network(adj, mode, p.parked, px, py, p.bs_x, p.bs_y)
+        c = ci
+        while c < cp_steps.shape[0] and cp_steps[c] == k:
+            depth[r, c] = d
+            farthest[r, c] = f
+            c += 1
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _graph_at(key: np.ndarray, r2: float, adj: np.ndarray) -> np.ndarray:
+    """``adj``, made the graph of the links whose key is at most ``r2`` (the link pass's test,
+    ``d² <= R²``, in the keys' arithmetic)."""
+    adj[:] = 0
+    m = key.shape[0]
+    for a in range(m):
+        for b in range(a + 1, m):
+            if key[a, b] <= r2:
+                _toggle(adj, a, b)
+    return adj
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def _open_step(k: int, cp_steps: np.ndarray, ci: int, going: np.ndarray, reach_cum: np.ndarray,
                conn_cum: np.ndarray, acc_reach: np.ndarray, acc_conn: np.ndarray) -> int:
     """The checkpoints of step ``k`` at every range whose run has not stopped (the kernel's
@@ -197,15 +245,16 @@ def _nodes(p: Params, unit: Params, n: int, target_x: float, target_y: float
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _records(nr: int, checkpoints: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
-                                                  np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _records(nr: int, checkpoints: int) -> tuple[np.ndarray, ...]:
     """Every range's records and state at the start: its notification step, its cumulative
     reachability and connected fraction at the checkpoints and their running sums, whether
-    its run goes on, and the step's reachability and connected drones."""
+    its run goes on, the step's reachability and connected drones, and the BS's network's
+    depth and farthest drone at the checkpoints."""
     return (np.full(nr, -1, dtype=np.int64), np.full((nr, checkpoints), np.nan),
             np.full((nr, checkpoints), np.nan), np.zeros(nr), np.zeros(nr),
             np.ones(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_),
-            np.zeros(nr, dtype=np.int64))
+            np.zeros(nr, dtype=np.int64), np.full((nr, checkpoints), np.nan),
+            np.full((nr, checkpoints), np.nan))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -260,10 +309,12 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
     det_step = detector = -1
     reach_key = _INF
     nr = r2s.shape[0]
-    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable,
-     connected) = _records(nr, cp_steps.shape[0])
+    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, reachable, connected, depth,
+     farthest) = _records(nr, cp_steps.shape[0])
+    scratch = np.zeros((1, n + 2, (n + 2 + 63) // 64), dtype=np.uint64)
     ci = 0
     for k in range(end + 1):
+        due = ci
         ci = _open_step(k, cp_steps, ci, going, reach_cum, conn_cum, acc_reach, acc_conn)
         first = _observe(k, last, positions, px, py, fade, unit, no_params, rng_shadow, p,
                          in_range, pass_start, sensed, rng_look)
@@ -277,6 +328,8 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
             for i in range(n):
                 if p.reachability == _DIRECT or not graph.part_of_bs(p.parked, modes[row, i]):
                     reach_key = min(reach_key, max(routed[i], key[n + 1, i]))
+        _networks(k, cp_steps, due, going, p, scratch, key, r2s, modes[row], px, py, depth,
+                  farthest)
         if det_step >= 0:
             # knowledge: sources are the drones that sensed (key 0) or knew (their key); a
             # key at or above the BS's running minimum no longer matters (notified there)
@@ -311,14 +364,7 @@ def critical(p: Params, unit: Params, target_x: float, target_y: float, position
         _close_step(k, p, det_step, notified, going, reachable, connected, acc_reach,
                     acc_conn, n)
     return Critical(det_step, detector, notify_steps[:count].copy(), notify_keys[:count].copy(),
-                    notified, reach_cum, conn_cum)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _toggle(adj: np.ndarray, a: int, b: int) -> None:
-    """Add or remove the link ``a``-``b`` in the adjacency bitsets ``adj``."""
-    adj[a, b >> 6] ^= np.uint64(1) << np.uint64(b & 63)
-    adj[b, a >> 6] ^= np.uint64(1) << np.uint64(a & 63)
+                    notified, reach_cum, conn_cum, depth, farthest)
 
 
 class Scan(NamedTuple):
@@ -366,6 +412,10 @@ class Scan(NamedTuple):
     parked: np.ndarray
     """``(1,)``: how many drones were landed at the last step (with ``readings.parked =
     base`` a landing changes the records at every range, as it may change no link)."""
+    depth: np.ndarray
+    """``(ranges, checkpoints)``: the BS's network's depth at each range."""
+    farthest: np.ndarray
+    """``(ranges, checkpoints)``: its farthest drone at each range."""
 
 
 @njit(cache=True, error_model="numpy")
@@ -383,7 +433,8 @@ def new_scan(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Scan:
     for a in range(m):
         bounds[0, a, a + 1:m] = thr[nr - 1] if nr > 0 else -_INF
     nw = (m + 63) // 64
-    notified, reach_cum, conn_cum, acc_reach, acc_conn, going, _, _ = _records(nr, checkpoints)
+    (notified, reach_cum, conn_cum, acc_reach, acc_conn, going, _, _, depth,
+     farthest) = _records(nr, checkpoints)
     routed = np.zeros((nr, nw), dtype=np.uint64)
     for j in range(nr):
         graph.add(routed[j], n)
@@ -392,7 +443,7 @@ def new_scan(r2s: np.ndarray, n: int, mp: int, checkpoints: int) -> Scan:
                    np.zeros((nr, n), dtype=np.bool_), np.zeros(n, dtype=np.bool_),
                    np.zeros(nr, dtype=np.bool_), np.zeros(nr, dtype=np.bool_), notified,
                    reach_cum, conn_cum, acc_reach, acc_conn, going, np.zeros(nr),
-                   np.zeros(nr), np.zeros(1, dtype=np.int64))
+                   np.zeros(nr), np.zeros(1, dtype=np.int64), depth, farthest)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -539,6 +590,8 @@ def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
                 sc.notified[j] = k
                 notified_now = True
         sc.changed[j] = sc.moved[j] = False
+    _networks(k, cp_steps, ci, sc.going, p, sc.adj, _NO_KEY, sc.thr, mode, px, py, sc.depth,
+              sc.farthest)
     # the step's records, added at every range at once: a range whose run stopped takes no
     # more checkpoints (_open_step), so what is added to it after does not matter
     if k == p.n_steps or (p.stop == STOP_DETECTED and detected):
@@ -552,14 +605,18 @@ def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
 
 
 @njit(cache=True, error_model="numpy")
-def carry_scan(start: int, p: Params, cp_steps: np.ndarray, ci: int, sc: Scan) -> None:
+def carry_scan(start: int, p: Params, cp_steps: np.ndarray, ci: int, sc: Scan,
+               mode: np.ndarray, px: np.ndarray, py: np.ndarray) -> None:
     """A settled team: every range whose run goes on observes its last step again to the
-    horizon (:func:`sarlink.engine.records.carry_records`)."""
+    horizon (:func:`sarlink.engine.records.carry_records`), its BS's network too."""
     for j in range(sc.thr.shape[0]):
         if sc.going[j]:
             records.carry_records(start, p.n_steps, cp_steps, ci, sc.reach_cum[j],
                                   sc.conn_cum[j], sc.acc_reach[j], sc.acc_conn[j],
                                   sc.d_reach[j], sc.d_conn[j])
+            d, f = records.network(sc.adj[j], mode, p.parked, px, py, p.bs_x, p.bs_y)
+            sc.depth[j, ci:] = d  # the graph is fixed too: the BS's network repeats
+            sc.farthest[j, ci:] = f
 
 
 @njit(cache=True, error_model="numpy")
@@ -567,4 +624,5 @@ def scan_records(sc: Scan) -> records.AtRanges:
     """Each range's records, in the order of the ranges as given."""
     back = np.empty_like(sc.rank)
     back[sc.rank] = np.arange(sc.rank.shape[0])
-    return records.AtRanges(sc.notified[back], sc.reach_cum[back], sc.conn_cum[back])
+    return records.AtRanges(sc.notified[back], sc.reach_cum[back], sc.conn_cum[back],
+                            sc.depth[back], sc.farthest[back])

@@ -171,7 +171,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                   acc_reach, acc_conn, p.dt if reachable else 0.0,
                                   p.dt * connected / n)
             if SCANS_RANGES and scanning:
-                critical_ranges.carry_scan(k + 1, p, cp_steps, ci, sc)
+                critical_ranges.carry_scan(k + 1, p, cp_steps, ci, sc, mode, px, py)
             elif not p.trace:  # the graph is fixed too: the BS's network repeats
                 d, f = records.network(adj, mode, p.parked, px, py, p.bs_x, p.bs_y)
                 depth[ci:] = d

@@ -41,6 +41,10 @@ class AtRanges(NamedTuple):
     """``(ranges, checkpoints)``: ``reach_cum`` at each range."""
     conn_cum: np.ndarray
     """``(ranges, checkpoints)``: ``conn_cum`` at each range."""
+    depth: np.ndarray
+    """``(ranges, checkpoints)``: the BS's network's depth at each range (:func:`network`)."""
+    farthest: np.ndarray
+    """``(ranges, checkpoints)``: its farthest drone at each range."""
 
 
 class RunRecord(NamedTuple):
@@ -77,8 +81,8 @@ class RunRecord(NamedTuple):
 @njit(cache=True, inline="always", error_model="numpy")
 def no_ranges(cp_steps: np.ndarray) -> AtRanges:
     """The records at no range: a run not scanned at several ranges."""
-    return AtRanges(np.full(0, -1, dtype=np.int64), np.empty((0, cp_steps.shape[0])),
-                    np.empty((0, cp_steps.shape[0])))
+    empty = np.empty((0, cp_steps.shape[0]))
+    return AtRanges(np.full(0, -1, dtype=np.int64), empty, empty, empty, empty)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -261,7 +261,8 @@ class Prepared:
         p = self.params
         if staircase:
             scenario, rec, crit = self.critical(seed, run, rcs, scenario=scenario)
-            at = AtRanges(crit.notified, crit.reach_cum, crit.conn_cum)
+            at = AtRanges(crit.notified, crit.reach_cum, crit.conn_cum, crit.depth,
+                          crit.farthest)
         else:
             own = self._own(seed, run)
             own._check_range_free()
@@ -284,7 +285,7 @@ class Prepared:
                 immediate=t_notify is not None and t_notify == rec.t_detect,
                 detector=None if rec.detector < 0 else rec.detector,
                 checkpoints=rec.checkpoints, reach_cum=at.reach_cum[j],
-                connected_cum=at.conn_cum[j], depth=rec.depth, farthest=rec.farthest,
+                connected_cum=at.conn_cum[j], depth=at.depth[j], farthest=at.farthest[j],
                 **stairs))
         return out
 
