@@ -197,3 +197,16 @@ class Prediction(IntEnum):
 
 
 PREDICTION_CODES = {"heading": Prediction.HEADING, "paths": Prediction.PATHS}
+
+
+class Priority(IntEnum):
+    """Which searchers relays connect when they are fewer than the tree needs (docs/model.md,
+    Relays)."""
+
+    NEAREST = 0  # "nearest first": searchers whose path needs fewest relays first
+    MOST = 1  # "most connected": the most searchers the relays can connect
+    BOTTLENECK = 2  # "k-bottleneck": the tree's longest hop as short as the relays make it
+
+
+PRIORITY_CODES = {"nearest-first": Priority.NEAREST, "most-connected": Priority.MOST,
+                  "k-bottleneck": Priority.BOTTLENECK}
