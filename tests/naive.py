@@ -354,3 +354,101 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     immediate = t_not is not None and t_not == t_det
     return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
                        farthest)
+
+
+@dataclass
+class NaiveRelayPlan:
+    needs: dict[int, int]
+    """The relays each tree edge needs, by the edge's far terminal (from the root)."""
+    connected: set[int]
+    """The terminals the plan holds to the root (the root too)."""
+    spent: int
+    """Relays the plan stands on tree edges."""
+    longest_hop: float
+    """The longest hop on the tree with the plan's relays on it."""
+
+
+def relay_plan(terminals: list[tuple[float, float]], rc: float, relays: int,
+               priority: str) -> NaiveRelayPlan:
+    """Where relays go (docs/model.md, Relays), plainly: Kruskal's minimum spanning tree over
+    the terminals (the root first), hung from the root by a breadth-first search; each edge
+    needs the fewest relays that cut it into hops of at most ``rc`` (1e-9 m of slack); with
+    fewer relays than all edges need, "nearest-first" walks the searchers by the relays on
+    their path (then distance to the root, then index) and builds each whole path that still
+    fits, "most-connected" tries every set of searchers to build paths to and keeps the one
+    that holds the most terminals for the fewest relays, "k-bottleneck" finds the shortest
+    longest hop the relays can give the tree by trying each hop length the edges can have."""
+    n = len(terminals)
+    pairs = sorted((_dist(terminals[a], terminals[b]), a, b)
+                   for a in range(n) for b in range(a + 1, n))
+    group = list(range(n))
+
+    def find(a: int) -> int:
+        while group[a] != a:
+            a = group[a]
+        return a
+
+    near: dict[int, set[int]] = {a: set() for a in range(n)}
+    for _, a, b in pairs:
+        if find(a) != find(b):
+            group[find(a)] = find(b)
+            near[a].add(b)
+            near[b].add(a)
+    parent = {0: -1}
+    queue = deque([0])
+    while queue:
+        a = queue.popleft()
+        for b in near[a]:
+            if b not in parent:
+                parent[b] = a
+                queue.append(b)
+    length = {v: _dist(terminals[v], terminals[parent[v]]) for v in range(1, n)}
+
+    def hops_within(v: int, limit: float) -> int:
+        """The fewest relays on edge v for hops of at most ``limit``."""
+        k = 0
+        while length[v] / (k + 1) > limit:
+            k += 1
+        return k
+
+    needs = {v: hops_within(v, rc + 1e-9) for v in range(1, n)}
+
+    def path(v: int) -> list[int]:
+        out = []
+        while v != 0:
+            out.append(v)
+            v = parent[v]
+        return out
+
+    def held(built: set[int]) -> set[int]:
+        return {v for v in range(n) if all(e in built or needs[e] == 0 for e in path(v))}
+
+    def cost(built: set[int]) -> int:
+        return sum(needs[e] for e in built)
+
+    if relays >= sum(needs.values()):
+        built = set(needs)
+    elif priority == "nearest-first":
+        built = set()
+        order = sorted(range(1, n), key=lambda v: (sum(needs[e] for e in path(v)),
+                                                   _dist(terminals[v], terminals[0]), v))
+        for v in order:
+            more = set(path(v)) - built
+            if cost(built) + cost(more) <= relays:
+                built |= more
+    elif priority == "most-connected":
+        built = set()
+        for mask in range(1 << (n - 1)):
+            trial = {e for v in range(1, n) if mask >> (v - 1) & 1 for e in path(v)}
+            if cost(trial) <= relays and (len(held(trial)), -cost(trial)) > (
+                    len(held(built)), -cost(built)):
+                built = trial
+    else:  # k-bottleneck: report the best longest hop; the edges hold what their relays allow
+        limits = sorted({length[v] / (k + 1) for v in length for k in range(relays + 1)})
+        best = next(t for t in limits if sum(hops_within(v, t) for v in length) <= relays)
+        alloc = {v: hops_within(v, best) for v in length}
+        return NaiveRelayPlan(needs, {v for v in range(n) if all(
+            alloc[e] >= needs[e] for e in path(v))}, sum(alloc.values()),
+            max((length[v] / (alloc[v] + 1) for v in length), default=0.0))
+    return NaiveRelayPlan(needs, held(built), cost(built), max(
+        (length[v] / ((needs[v] if v in built else 0) + 1) for v in length), default=0.0))

@@ -39,6 +39,15 @@ MOST = int(Priority.MOST)
 BOTTLENECK = int(Priority.BOTTLENECK)
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def dist(ax: float, ay: float, bx: float, by: float) -> float:
+    """The distance from a to b as ``sqrt(dx² + dy²)``, which plain Python reproduces bit for
+    bit (Numba's ``math.hypot`` and CPython's differ in the last bit)."""
+    dx = ax - bx
+    dy = ay - by
+    return math.sqrt(dx * dx + dy * dy)
+
+
 @njit(cache=True, error_model="numpy")
 def spanning_tree(x: np.ndarray, y: np.ndarray, root: int) -> tuple[np.ndarray, np.ndarray]:
     """Prim's minimum spanning tree over the points ``(x, y)`` grown from ``root``, O(n²).
@@ -62,7 +71,7 @@ def spanning_tree(x: np.ndarray, y: np.ndarray, root: int) -> tuple[np.ndarray, 
         order[k] = u
         for v in range(n):
             if not done[v]:
-                d = math.hypot(x[v] - x[u], y[v] - y[u])
+                d = dist(x[v], y[v], x[u], y[u])
                 if d < best[v]:
                     best[v] = d
                     parent[v] = u
@@ -87,7 +96,7 @@ def edge_needs(x: np.ndarray, y: np.ndarray, parent: np.ndarray,
     for v in range(n):
         p = parent[v]
         if p >= 0:
-            length[v] = math.hypot(x[v] - x[p], y[v] - y[p])
+            length[v] = dist(x[v], y[v], x[p], y[p])
             need[v] = chain(length[v], rc)
     return length, need
 
@@ -103,9 +112,9 @@ def _nearest_first(x: np.ndarray, y: np.ndarray, root: int, parent: np.ndarray,
     for k in range(1, n):
         v = order[k]
         cost[v] = cost[parent[v]] + need[v]
-    dist = np.empty(n)
+    away = np.empty(n)
     for v in range(n):
-        dist[v] = math.hypot(x[v] - x[root], y[v] - y[root])
+        away[v] = dist(x[v], y[v], x[root], y[root])
     queue = np.empty(n - 1, dtype=np.int64)  # insertion sort by (cost, dist, index)
     m = 0
     for v in range(n):
@@ -113,7 +122,7 @@ def _nearest_first(x: np.ndarray, y: np.ndarray, root: int, parent: np.ndarray,
             continue
         j = m
         while j > 0 and (cost[queue[j - 1]] > cost[v] or (
-                cost[queue[j - 1]] == cost[v] and dist[queue[j - 1]] > dist[v])):
+                cost[queue[j - 1]] == cost[v] and away[queue[j - 1]] > away[v])):
             queue[j] = queue[j - 1]
             j -= 1
         queue[j] = v
@@ -269,7 +278,7 @@ def into_area(x: float, y: float, size: float, edges: np.ndarray) -> tuple[float
         l2 = ex * ex + ey * ey
         t = 0.0 if l2 == 0.0 else min(1.0, max(0.0, ((x - x1) * ex + (y - y1) * ey) / l2))
         px, py = x1 + t * ex, y1 + t * ey
-        d = math.hypot(px - x, py - y)
+        d = dist(px, py, x, y)
         if d < near and l2 > 0.0:
             near, qx, qy = d, px, py
             nx, ny = -ey / math.sqrt(l2), ex / math.sqrt(l2)
@@ -311,11 +320,11 @@ def points(x: np.ndarray, y: np.ndarray, parent: np.ndarray, order: np.ndarray,
 
 
 @njit(cache=True, error_model="numpy")
-def _matches(dist: np.ndarray, limit: float, match: np.ndarray, owner: np.ndarray) -> bool:
+def _matches(far: np.ndarray, limit: float, match: np.ndarray, owner: np.ndarray) -> bool:
     """Whether every point (row) gets its own relay (column) at most ``limit`` away: augmenting
     paths by breadth-first search (Kuhn's algorithm). ``match`` (relay of each point) and
     ``owner`` (point of each relay, -1 none) are filled in."""
-    p, k = dist.shape
+    p, k = far.shape
     match[:] = -1
     owner[:] = -1
     came = np.empty(k, dtype=np.int64)
@@ -329,7 +338,7 @@ def _matches(dist: np.ndarray, limit: float, match: np.ndarray, owner: np.ndarra
             u = queue[head]
             head += 1
             for j in range(k):
-                if not seen[j] and dist[u, j] <= limit:
+                if not seen[j] and far[u, j] <= limit:
                     seen[j] = True
                     came[j] = u
                     if owner[j] < 0:
@@ -410,23 +419,23 @@ def assign(rx: np.ndarray, ry: np.ndarray, px: np.ndarray,
     goal = np.full(k, -1, dtype=np.int64)
     if p == 0:
         return goal, 0.0
-    dist = np.empty((p, k))
+    far = np.empty((p, k))
     for i in range(p):
         for j in range(k):
-            dist[i, j] = math.hypot(px[i] - rx[j], py[i] - ry[j])
-    levels = np.unique(dist)
+            far[i, j] = dist(px[i], py[i], rx[j], ry[j])
+    levels = np.unique(far)
     match = np.empty(p, dtype=np.int64)
     owner = np.empty(k, dtype=np.int64)
     lo, hi = 0, levels.shape[0] - 1
     while lo < hi:
         mid = (lo + hi) // 2
-        if _matches(dist, levels[mid], match, owner):
+        if _matches(far, levels[mid], match, owner):
             hi = mid
         else:
             lo = mid + 1
     limit = levels[lo]
-    far = (p + 1.0) * (limit + 1.0)  # dearer than any assignment within the limit
-    cost = np.where(dist <= limit, dist, far)
+    dear = (p + 1.0) * (limit + 1.0)  # more than any assignment within the limit
+    cost = np.where(far <= limit, far, dear)
     match = _least_total(cost)
     for i in range(p):
         goal[match[i]] = i
