@@ -109,6 +109,27 @@ def test_as_many_relays_as_the_tree_needs_hold_every_searcher(seed: int, n: int,
 
 
 @pytest.mark.parametrize("priority", sorted(PRIORITY_CODES))
+@given(st.integers(0, 2**32 - 1), st.integers(2, 12), st.data())
+def test_the_root_may_be_any_terminal(priority: str, seed: int, n: int,
+                                      data: st.DataObject) -> None:
+    """The BS moved to index ``root`` (and the searchers shifted to make room) gives the same
+    goals, the same terminals served and held (renumbered), and the same count."""
+    t = _random(seed, n)
+    k = data.draw(st.integers(0, 6))
+    root = data.draw(st.integers(0, n - 1))
+    moved = np.roll(t, root, axis=0)  # terminal i is now at (i + root) % n
+    r = _random(seed + 1, k)
+    code = int(PRIORITY_CODES[priority])
+    a = plan(t[:, 0].copy(), t[:, 1].copy(), 0, 400.0, r[:, 0].copy(), r[:, 1].copy(), code,
+             SIDE, SQUARE)
+    b = plan(moved[:, 0].copy(), moved[:, 1].copy(), root, 400.0, r[:, 0].copy(),
+             r[:, 1].copy(), code, SIDE, SQUARE)
+    assert np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) and a[4] == b[4]
+    assert np.array_equal(np.where(a[2] >= 0, (a[2] + root) % n, -1), b[2])
+    assert np.array_equal(np.roll(a[3], root), b[3])
+
+
+@pytest.mark.parametrize("priority", sorted(PRIORITY_CODES))
 @given(st.integers(0, 2**32 - 1), st.integers(2, 9), st.floats(200, 1000), st.data())
 def test_fewer_relays_connect_what_the_priority_says(priority: str, seed: int, n: int,
                                                      rc: float, data: st.DataObject) -> None:
