@@ -266,7 +266,8 @@ def linked(root: int, parent: np.ndarray, order: np.ndarray, need: np.ndarray,
 def into_area(x: float, y: float, size: float, edges: np.ndarray) -> tuple[float, float]:
     """``(x, y)`` if it is in the area, else the nearest point of the area: clamped into the
     square ``[0, size]²`` when there are no ``edges``, else the nearest point of the polygon's
-    boundary (outline or hole) moved :data:`NUDGE` m on into the area."""
+    boundary (outline or hole) moved :data:`NUDGE` m on into the area (that point itself if
+    no step down to a nanometre lands inside)."""
     if edges.shape[0] == 0:
         return min(max(x, 0.0), size), min(max(y, 0.0), size)
     if contains(x, y, edges):
