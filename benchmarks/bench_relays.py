@@ -116,7 +116,7 @@ def _heuristic(t: np.ndarray, rc: float) -> tuple[int, np.ndarray]:
     x, y = t[:, 0].copy(), t[:, 1].copy()
     parent, order = spanning_tree(x, y, 0)
     _, need = edge_needs(x, y, parent, rc)
-    px, py, _ = points(x, y, parent, order, need, 1e7, SQUARE)
+    px, py, _ = points(x, y, parent, order, need, 1e7, SQUARE, len(x))
     return int(need.sum()), np.column_stack([px, py])
 
 

@@ -35,6 +35,7 @@ from sarlink.engine.relays import (
     plan,
     points,
     spanning_tree,
+    tree,
 )
 
 SQUARE = np.empty((0, 4))
@@ -95,16 +96,17 @@ def test_an_edge_of_a_whole_number_of_ranges_needs_one_relay_fewer(k: int, rc: f
        st.integers(0, 8))
 def test_as_many_relays_as_the_tree_needs_hold_every_searcher(seed: int, n: int, rc: float,
                                                               spare: int) -> None:
-    """The invariant: relays standing at the points (as many as the tree needs, or more)
-    link every searcher to the BS; the spare relays hold where they are."""
+    """The invariant: relays standing at the points (as many as the spanning tree needs, or
+    more) link every searcher to the BS, branch points and all; the branched tree needs no
+    more relays than the spanning tree; the spare relays hold where they are."""
     t = _random(seed, n)
     *_, need = _tree(t, rc)
     r = _random(seed + 1, int(need.sum()) + spare)
     gx, gy, serves, held, needed = plan(t[:, 0].copy(), t[:, 1].copy(), 0, rc, r[:, 0].copy(),
                                         r[:, 1].copy(), 0, SIDE, SQUARE)
-    assert needed == need.sum() and held.all()
+    assert needed <= need.sum() and held.all() and len(held) == n
     assert _held(t, np.column_stack([gx, gy]), rc) == set(range(n))
-    assert (serves < 0).sum() == spare
+    assert (serves < 0).sum() == len(r) - needed
     assert np.array_equal(gx[serves < 0], r[serves < 0, 0])  # spare relays hold
 
 
@@ -125,7 +127,8 @@ def test_the_root_may_be_any_terminal(priority: str, seed: int, n: int,
     b = plan(moved[:, 0].copy(), moved[:, 1].copy(), root, 400.0, r[:, 0].copy(),
              r[:, 1].copy(), code, SIDE, SQUARE)
     assert np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) and a[4] == b[4]
-    assert np.array_equal(np.where(a[2] >= 0, (a[2] + root) % n, -1), b[2])
+    renumbered = np.where((a[2] >= 0) & (a[2] < n), (a[2] + root) % n, a[2])  # branch
+    assert np.array_equal(renumbered, b[2])  # points keep their numbers n, n + 1, ...
     assert np.array_equal(np.roll(a[3], root), b[3])
 
 
@@ -234,29 +237,33 @@ def test_no_relay_point_is_outside_the_area_or_in_a_hole(mission: Mission, seed:
                                                          rc: float, priority: str) -> None:
     """Searchers anywhere in a polygon with holes: every goal is inside (the kernel's test
     and shapely's), and a point that had to move went to the nearest point inside (to within
-    the nudge past the boundary)."""
+    the nudge past the boundary). The relays start inside too: a spare one holds where it is."""
     area = area_polygon(mission.region, mission.area.size)
     edges = edge_array([np.asarray(area.exterior.coords)]
                        + [np.asarray(h.coords) for h in area.interiors])
     rng = np.random.default_rng(seed)
     lo_x, lo_y, hi_x, hi_y = area.bounds
-    t = [mission.area.bs_xy]
-    while len(t) < n:
-        p = rng.uniform((lo_x, lo_y), (hi_x, hi_y))
-        if area.contains(shapely.Point(p)):
-            t.append(tuple(p))
-    tt = np.array(t)
+
+    def inside(k: int) -> list[tuple[float, float]]:
+        out: list[tuple[float, float]] = []
+        while len(out) < k:
+            p = rng.uniform((lo_x, lo_y), (hi_x, hi_y))
+            if area.contains(shapely.Point(p)):
+                out.append((float(p[0]), float(p[1])))
+        return out
+
+    tt = np.array([mission.area.bs_xy, *inside(n - 1)])
     x, y, parent, order, length, need = _tree(tt, rc)
     alloc = allocate(x, y, 0, parent, order, length, need, int(need.sum()),
                      int(PRIORITY_CODES[priority]))
     on_tree = [(x[parent[v]] + (x[v] - x[parent[v]]) * j / (alloc[v] + 1),
                 y[parent[v]] + (y[v] - y[parent[v]]) * j / (alloc[v] + 1))
                for v in order[1:] for j in range(1, alloc[v] + 1)]
-    px, py, _ = points(x, y, parent, order, alloc, mission.area.size, edges)
+    px, py, _ = points(x, y, parent, order, alloc, mission.area.size, edges, n)
     for (a, b), qx, qy in zip(on_tree, px, py, strict=True):
         assert contains(qx, qy, edges) and area.covers(shapely.Point(qx, qy))
         assert math.hypot(qx - a, qy - b) <= area.distance(shapely.Point(a, b)) + NUDGE + 1e-6
-    r = rng.uniform((lo_x, lo_y), (hi_x, hi_y), (int(need.sum()), 2))
+    r = np.array(inside(int(need.sum()))).reshape(-1, 2)  # the branched tree may leave some
     gx, gy, *_ = plan(x, y, 0, rc, r[:, 0].copy(), r[:, 1].copy(),
                       int(PRIORITY_CODES[priority]), mission.area.size, edges)
     assert all(contains(a, b, edges) for a, b in zip(gx, gy, strict=True))
@@ -282,25 +289,47 @@ def test_the_exact_programme_agrees_with_cp_sat(seed: int) -> None:
         shapes, n, rc)
 
 
+@given(st.floats(100, 1500), st.floats(1.0 + 1e-6, math.sqrt(3) - 1e-6), st.floats(0, 2 * math.pi),
+       st.integers(0, 2))
+def test_a_branch_point_holds_a_wide_triangle_with_one_relay(rc: float, side: float,
+                                                             turn: float, root: int) -> None:
+    """Three terminals at the corners of an equilateral triangle of side s, r_c < s <= sqrt(3)
+    r_c: each spanning-tree edge needs a relay (two in all), one relay at the centre, s / sqrt(3)
+    from each, holds all three; with one relay the branched plan holds them, with the
+    spanning tree alone it could not."""
+    a = turn + np.array([0.0, 2 * math.pi / 3, 4 * math.pi / 3])
+    t = 5000.0 + side * rc / math.sqrt(3) * np.column_stack([np.cos(a), np.sin(a)])
+    x, y = t[:, 0].copy(), t[:, 1].copy()
+    assert int(tree(x, y, root, rc, False)[5].sum()) == 2
+    assert int(tree(x, y, root, rc, True)[5].sum()) == 1
+    gx, gy, serves, held, needed = plan(x, y, root, rc, np.zeros(1), np.zeros(1), 0, SIDE, SQUARE)
+    assert needed == 1 and held.all() and serves[0] == 3
+    assert _held(t, np.column_stack([gx, gy]), rc) == {0, 1, 2}
+    assert not plan(x, y, root, rc, np.zeros(1), np.zeros(1), 0, SIDE, SQUARE, False)[3].all()
+
+
 def test_the_count_against_the_fewest_relays() -> None:
     """On 200 random instances (the BS and 1 to 7 searchers in a 3 km square, r_c 300 to
-    1000 m): the MST heuristic's count h, against exact bounds on the fewest relays (refined
-    until they settle whether the optimum is at least h - 1). Every upper bound is a placement
-    that holds (checked by a breadth-first search), so a gap of two or more it shows is real;
-    the ratio h <= 4 OPT (Mandoiu and Zelikovsky) holds on every instance. Within one of the
-    optimum is proven on 85 % or more, and more than one on 8 % or fewer: not the 95 % the
-    issue hoped for (the measured shares and the worst gap: benchmarks/results/relays.md)."""
+    1000 m): the spanning tree's count (against scipy's) and the branched tree's count h, no
+    more, against exact bounds on the fewest relays (refined until they settle whether the
+    optimum is at least h - 1). Every upper bound is a placement that holds (checked by a
+    breadth-first search), so a gap of two or more it shows is real; the ratio h <= 4 OPT
+    (Mandoiu and Zelikovsky's, for the spanning tree's count) holds on every instance. Within
+    one of the optimum is proven on 186 (93 %), more than one on 6: not yet the 95 % the issue
+    asks (the gaps: benchmarks/results/relays.md). The spanning tree alone: 178 and 12."""
     rng = np.random.default_rng(2024)
     within = beyond = 0
     for _ in range(200):
         n = int(rng.integers(2, 9))
         t = rng.uniform(0, 3000, (n, 2))
         rc = float(rng.uniform(300, 1000))
-        x, y, parent, order, _, need = _tree(t, rc)
-        h = int(need.sum())
+        x, y = t[:, 0].copy(), t[:, 1].copy()
         mst = minimum_spanning_tree(cdist(t, t)).tocoo()
-        assert h == sum(chain(d, rc) for d in mst.data)
-        px, py, _ = points(x, y, parent, order, need, SIDE, SQUARE)
+        assert int(tree(x, y, 0, rc, False)[5].sum()) == sum(chain(d, rc) for d in mst.data)
+        bx, by, parent, order, _, need = tree(x, y, 0, rc, True)
+        h = int(need.sum())
+        assert h <= sum(chain(d, rc) for d in mst.data)
+        px, py, _ = points(bx, by, parent, order, need, SIDE, SQUARE, n)
         found = steiner_bounds.fewest_relays(t, rc, np.column_stack([px, py]),
                                              enough=max(h - 1, 0))
         assert len(found.relays) == found.upper and found.lower <= found.upper <= h
@@ -310,4 +339,4 @@ def test_the_count_against_the_fewest_relays() -> None:
         assert h <= 4 * max(found.lower, 1)
         within += found.lower >= h - 1
         beyond += found.upper <= h - 2
-    assert within >= 170 and beyond <= 16, (within, beyond)
+    assert within >= 186 and beyond <= 6, (within, beyond)

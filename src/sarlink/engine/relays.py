@@ -102,6 +102,140 @@ def edge_needs(x: np.ndarray, y: np.ndarray, parent: np.ndarray,
 
 
 @njit(cache=True, error_model="numpy")
+def _centres(ax: float, ay: float, bx: float, by: float, cx: float,
+             cy: float) -> tuple[float, float, float, float]:
+    """Two candidate branch points for three nodes: the Fermat point (least total leg length;
+    Weiszfeld's iteration, a fixed number of steps) and the centre of the smallest circle
+    round them (the shortest longest leg). The caller passes the three in a fixed order of
+    their coordinates, so that the result does not depend on how the nodes are numbered."""
+    if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0.0:  # collinear: no branch
+        return ax, ay, ax, ay
+    fx, fy = (ax + bx + cx) / 3.0, (ay + by + cy) / 3.0
+    for _ in range(64):
+        da, db, dc = dist(fx, fy, ax, ay), dist(fx, fy, bx, by), dist(fx, fy, cx, cy)
+        if da < 1e-9 or db < 1e-9 or dc < 1e-9:
+            break
+        w = 1.0 / da + 1.0 / db + 1.0 / dc
+        fx = (ax / da + bx / db + cx / dc) / w
+        fy = (ay / da + by / db + cy / dc) / w
+    ab, bc, ca = dist(ax, ay, bx, by), dist(bx, by, cx, cy), dist(cx, cy, ax, ay)
+    if ab * ab >= bc * bc + ca * ca:  # right or obtuse: the longest side's midpoint
+        return fx, fy, (ax + bx) / 2.0, (ay + by) / 2.0
+    if bc * bc >= ab * ab + ca * ca:
+        return fx, fy, (bx + cx) / 2.0, (by + cy) / 2.0
+    if ca * ca >= ab * ab + bc * bc:
+        return fx, fy, (cx + ax) / 2.0, (cy + ay) / 2.0
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
+    return (fx, fy, (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d,
+            (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _before(ax: float, ay: float, bx: float, by: float) -> bool:
+    return ax < bx or (ax == bx and ay < by)
+
+
+@njit(cache=True, error_model="numpy")
+def _pruned(x: np.ndarray, y: np.ndarray, m: int, terminals: int,
+            root: int) -> tuple[int, np.ndarray, np.ndarray]:
+    """Prim's tree over the first ``m`` nodes, after dropping every branch point (node
+    ``>= terminals``) of degree two or less in it, one at a time (which never costs a relay:
+    ``chain(|ab|) <= chain(|as|) + chain(|sb|) + 1``). Returns the nodes left and the tree."""
+    while True:
+        parent, order = spanning_tree(x[:m], y[:m], root)
+        degree = np.zeros(m, dtype=np.int64)
+        for v in range(m):
+            if parent[v] >= 0:
+                degree[v] += 1
+                degree[parent[v]] += 1
+        drop = -1
+        for v in range(terminals, m):
+            if degree[v] <= 2:
+                drop = v
+                break
+        if drop < 0:
+            return m, parent, order
+        for v in range(drop, m - 1):
+            x[v], y[v] = x[v + 1], y[v + 1]
+        m -= 1
+
+
+@njit(cache=True, error_model="numpy")
+def tree(tx: np.ndarray, ty: np.ndarray, root: int, rc: float, branch: bool
+         ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The tree the relays hold: the terminals' minimum spanning tree, and with ``branch``
+    branch points added where a 3-star saves relays (docs/model.md, Relays).
+
+    The 3-star step: for every node v and two of its tree neighbours u, w, a branch point s
+    (:func:`_centres`) joined to v, u and w replaces the edges vu and vw when
+    ``1 + chain(|sv|) + chain(|su|) + chain(|sw|)`` is less than their relays; the star that
+    saves the most (then shortens the tree most) is taken, the tree is re-spanned over the
+    terminals and branch points (the minimum spanning tree has the fewest relays for its
+    nodes, ``chain`` being monotone), branch points of degree two or less are dropped, and
+    the step repeats until no star saves a relay. Each step saves at least one, so the count
+    is never above the spanning tree's.
+
+    Returns the nodes' coordinates (the terminals first, then the branch points), each node's
+    parent (``-1`` at the root) and the order they join, and each edge's length and relays
+    by child node, a branch point's own relay counted on the edge to its parent.
+    """
+    n = tx.shape[0]
+    x = np.empty(2 * n)
+    y = np.empty(2 * n)
+    x[:n] = tx
+    y[:n] = ty
+    m = n
+    parent, order = spanning_tree(tx, ty, root)
+    while branch and n >= 3:
+        length, need = edge_needs(x[:m], y[:m], parent, rc)
+        near = np.full((m, m), -1, dtype=np.int64)  # each node's tree neighbours
+        deg = np.zeros(m, dtype=np.int64)
+        for v in range(m):
+            p = parent[v]
+            if p >= 0:
+                near[v, deg[v]] = p
+                deg[v] += 1
+                near[p, deg[p]] = v
+                deg[p] += 1
+        gain, shorter, sx, sy = 0, 0.0, 0.0, 0.0
+        for v in range(m):
+            for i in range(deg[v]):
+                for j in range(i + 1, deg[v]):
+                    u, w = near[v, i], near[v, j]
+                    eu = u if parent[u] == v else v  # the edges' child nodes
+                    ew = w if parent[w] == v else v
+                    old = need[eu] + need[ew]
+                    if old < 2:  # a star costs its centre: nothing to save
+                        continue
+                    a, b, c = v, u, w  # in the order of their coordinates
+                    if _before(x[b], y[b], x[a], y[a]):
+                        a, b = b, a
+                    if _before(x[c], y[c], x[b], y[b]):
+                        b, c = c, b
+                        if _before(x[b], y[b], x[a], y[a]):
+                            a, b = b, a
+                    f1, f2, g1, g2 = _centres(x[a], y[a], x[b], y[b], x[c], y[c])
+                    for cx, cy in ((f1, f2), (g1, g2)):
+                        la, lb, lc = (dist(cx, cy, x[a], y[a]), dist(cx, cy, x[b], y[b]),
+                                      dist(cx, cy, x[c], y[c]))
+                        saves = old - 1 - chain(la, rc) - chain(lb, rc) - chain(lc, rc)
+                        cut = length[eu] + length[ew] - la - lb - lc
+                        if saves > gain or (saves == gain and saves > 0 and cut > shorter):
+                            gain, shorter, sx, sy = saves, cut, cx, cy
+        if gain <= 0:
+            break
+        x[m], y[m] = sx, sy
+        m, parent, order = _pruned(x, y, m + 1, n, root)
+    x = x[:m].copy()
+    y = y[:m].copy()
+    length, need = edge_needs(x, y, parent, rc)
+    for v in range(n, m):
+        need[v] += 1
+    return x, y, parent, order, length, need
+
+
+@njit(cache=True, error_model="numpy")
 def _nearest_first(x: np.ndarray, y: np.ndarray, root: int, parent: np.ndarray,
                    order: np.ndarray, need: np.ndarray, relays: int) -> np.ndarray:
     """The relays per edge under "nearest first": the searchers in order of the relays their
@@ -296,12 +430,13 @@ def into_area(x: float, y: float, size: float, edges: np.ndarray) -> tuple[float
 
 @njit(cache=True, error_model="numpy")
 def points(x: np.ndarray, y: np.ndarray, parent: np.ndarray, order: np.ndarray,
-           alloc: np.ndarray, size: float,
-           edges: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+           alloc: np.ndarray, size: float, edges: np.ndarray,
+           terminals: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The relay points: ``alloc[v]`` evenly spaced on the edge from ``parent[v]`` to ``v``,
-    from the parent's end, each moved into the area (:func:`into_area`). Returns their
-    coordinates and, for each, the terminal ``v`` whose edge it lies on (edges in the tree's
-    order)."""
+    from the parent's end, the last of them at ``v`` itself when ``v`` is a branch point
+    (a node ``>= terminals``, fully allocated), each moved into the area (:func:`into_area`).
+    Returns their coordinates and, for each, the node ``v`` whose edge it lies on (edges in
+    the tree's order)."""
     total = alloc.sum()
     px = np.empty(total)
     py = np.empty(total)
@@ -312,7 +447,7 @@ def points(x: np.ndarray, y: np.ndarray, parent: np.ndarray, order: np.ndarray,
         a = alloc[v]
         p = parent[v]
         for j in range(1, a + 1):
-            f = j / (a + 1)
+            f = j / (a + 1) if v < terminals else j / a
             px[i], py[i] = into_area(x[p] + f * (x[v] - x[p]), y[p] + f * (y[v] - y[p]),
                                      size, edges)
             serves[i] = v
@@ -445,26 +580,32 @@ def assign(rx: np.ndarray, ry: np.ndarray, px: np.ndarray,
 
 @njit(cache=True, error_model="numpy")
 def plan(tx: np.ndarray, ty: np.ndarray, root: int, rc: float, rx: np.ndarray, ry: np.ndarray,
-         priority: int, size: float, edges: np.ndarray
+         priority: int, size: float, edges: np.ndarray, branch: bool = True
          ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int]:
     """One re-plan: where each relay flies to hold the terminals ``(tx, ty)`` (the root, by
     convention the BS at index 0, and the searchers) together at range ``rc``.
 
     ``(rx, ry)`` are the relays' positions; ``priority`` chooses whom to connect when they
-    are too few; ``size`` and ``edges`` are the area (:mod:`sarlink.engine.area`). Returns
-    each relay's goal (a spare relay's is where it is), the terminal whose tree edge its point
-    lies on (-1: spare), which terminals the plan links to the root, and the relays the whole
-    tree needs.
+    are too few; ``size`` and ``edges`` are the area (:mod:`sarlink.engine.area`); ``branch``
+    adds branch points to the spanning tree (:func:`tree`). When the relays are too few for
+    the branched tree, the priority chooses on the spanning tree, whose edges each stand
+    alone. Returns each relay's goal (a spare relay's is where it is), the node whose tree
+    edge its point lies on (a terminal, or ``n + i`` for the ``i``-th branch point; -1:
+    spare), which terminals the plan links to the root, and the relays the tree needs.
     """
-    parent, order = spanning_tree(tx, ty, root)
-    length, need = edge_needs(tx, ty, parent, rc)
-    alloc = allocate(tx, ty, root, parent, order, length, need, rx.shape[0], priority)
-    px, py, on = points(tx, ty, parent, order, alloc, size, edges)
+    n = tx.shape[0]
+    k = rx.shape[0]
+    x, y, parent, order, length, need = tree(tx, ty, root, rc, branch)
+    fewest = int(need.sum())
+    if k < fewest and x.shape[0] > n:
+        x, y, parent, order, length, need = tree(tx, ty, root, rc, False)
+    alloc = allocate(x, y, root, parent, order, length, need, k, priority)
+    px, py, on = points(x, y, parent, order, alloc, size, edges, n)
     goal, _ = assign(rx, ry, px, py)
     gx = rx.copy()
     gy = ry.copy()
-    serves = np.full(rx.shape[0], -1, dtype=np.int64)
-    for j in range(rx.shape[0]):
+    serves = np.full(k, -1, dtype=np.int64)
+    for j in range(k):
         if goal[j] >= 0:
             gx[j], gy[j], serves[j] = px[goal[j]], py[goal[j]], on[goal[j]]
-    return gx, gy, serves, linked(root, parent, order, need, alloc), int(need.sum())
+    return gx, gy, serves, linked(root, parent, order, need, alloc)[:n], fewest
