@@ -131,6 +131,54 @@ def _centres(ax: float, ay: float, bx: float, by: float, cx: float,
             (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d)
 
 
+@njit(cache=True, error_model="numpy")
+def _circles(ax: float, ay: float, ra: float, bx: float, by: float, rb: float,
+             cx: np.ndarray, cy: np.ndarray, k: int) -> int:
+    """The points where the circles of radius ``ra`` round a and ``rb`` round b cross, put
+    at ``cx[k:]``, ``cy[k:]``; returns ``k`` plus their number (none, one or two)."""
+    d = dist(ax, ay, bx, by)
+    if d == 0.0 or d > ra + rb or d < abs(ra - rb):
+        return k
+    along = (ra * ra - rb * rb + d * d) / (2.0 * d)
+    h = math.sqrt(max(ra * ra - along * along, 0.0))
+    ux, uy = (bx - ax) / d, (by - ay) / d
+    for sign in (1.0, -1.0):
+        cx[k] = ax + along * ux - sign * h * uy
+        cy[k] = ay + along * uy + sign * h * ux
+        k += 1
+    return k
+
+
+SLACK = 1e-6
+"""Metres inside a circle of a whole number of ranges that a candidate branch point is put,
+so that rounding does not push its leg past the range."""
+
+
+@njit(cache=True, error_model="numpy")
+def _candidates(x: np.ndarray, y: np.ndarray, a: int, b: int, c: int, rc: float,
+                cx: np.ndarray, cy: np.ndarray) -> int:
+    """Candidate branch points for the nodes a, b, c (given in a fixed order of their
+    coordinates, so that the candidates do not depend on how the nodes are numbered): the two
+    :func:`_centres`, and where circles of a whole number of ranges (less :data:`SLACK`) round
+    two of them cross, for the chain counts the Fermat point's legs have, one more, and up to
+    two fewer: a point with the fewest relays on its three legs lies, if not on a node, at
+    such a crossing. Returns how many are in ``cx``, ``cy``."""
+    f1, f2, g1, g2 = _centres(x[a], y[a], x[b], y[b], x[c], y[c])
+    cx[0], cy[0], cx[1], cy[1] = f1, f2, g1, g2
+    k = 2
+    three = (a, b, c)
+    for i in range(3):
+        for j in range(i + 1, 3):
+            p, q = three[i], three[j]
+            kp = chain(dist(f1, f2, x[p], y[p]), rc)
+            kq = chain(dist(f1, f2, x[q], y[q]), rc)
+            for hp in range(max(kp - 2, 0), kp + 2):
+                for hq in range(max(kq - 2, 0), kq + 2):
+                    k = _circles(x[p], y[p], (hp + 1) * rc - SLACK, x[q], y[q],
+                                 (hq + 1) * rc - SLACK, cx, cy, k)
+    return k
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def _before(ax: float, ay: float, bx: float, by: float) -> bool:
     return ax < bx or (ax == bx and ay < by)
@@ -186,6 +234,8 @@ def tree(tx: np.ndarray, ty: np.ndarray, root: int, rc: float, branch: bool
     x[:n] = tx
     y[:n] = ty
     m = n
+    qx = np.empty(2 + 3 * 4 * 4 * 2)  # room for every candidate of :func:`_candidates`
+    qy = np.empty_like(qx)
     parent, order = spanning_tree(tx, ty, root)
     while branch and n >= 3:
         length, need = edge_needs(x[:m], y[:m], parent, rc)
@@ -215,8 +265,8 @@ def tree(tx: np.ndarray, ty: np.ndarray, root: int, rc: float, branch: bool
                         b, c = c, b
                         if _before(x[b], y[b], x[a], y[a]):
                             a, b = b, a
-                    f1, f2, g1, g2 = _centres(x[a], y[a], x[b], y[b], x[c], y[c])
-                    for cx, cy in ((f1, f2), (g1, g2)):
+                    for q in range(_candidates(x, y, a, b, c, rc, qx, qy)):
+                        cx, cy = qx[q], qy[q]
                         la, lb, lc = (dist(cx, cy, x[a], y[a]), dist(cx, cy, x[b], y[b]),
                                       dist(cx, cy, x[c], y[c]))
                         saves = old - 1 - chain(la, rc) - chain(lb, rc) - chain(lc, rc)
