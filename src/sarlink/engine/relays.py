@@ -6,6 +6,9 @@ Prim's minimum spanning tree over the terminals (the root, by convention the BS,
 searchers), then ``ceil(L / r_c) - 1`` points evenly spaced on each tree edge of length ``L``,
 so that every link of the tree is at most ``r_c``. An edge counts as within ``r_c`` when
 ``L <= r_c + TOL``: an edge of exactly ``r_c`` takes no relay, one of ``2 r_c`` takes one.
+By default (:func:`tree`) branch points, each a relay, are added where a 3-star over a node
+and two of its tree neighbours needs fewer relays than the two edges it replaces (the 3-star
+idea of Chen, Du, Hu, Lin, Wang and Xue, 2000), which never raises the count.
 
 With fewer relays than the tree needs, a priority (:class:`sarlink.engine.codes.Priority`)
 chooses which edges get theirs; with more, the spare relays hold where they are. The relays
