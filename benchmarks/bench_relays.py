@@ -1,7 +1,7 @@
-"""Relay placement (:mod:`sarlink.engine.relays`): what one re-plan costs, how many relays the
+"""Relay placement (:mod:`sarlink.engine.relays.placement`): what one re-plan costs, how many relays the
 MST heuristic asks for against the fewest that would do, and whom each priority connects.
 
-1. The time of one re-plan (tree, points, assignment: :func:`sarlink.engine.relays.plan`)
+1. The time of one re-plan (tree, points, assignment: :func:`sarlink.engine.relays.placement.plan`)
    for teams of N_m = 4 to 30 drones, half of them relays, over random searcher and relay
    positions in the paper's 4 km square with the BS at its centre and r_c = 500 m: median
    and 99th percentile over many instances, after compiling. Then at N_m = 30 with every
@@ -30,7 +30,7 @@ import numpy as np
 
 import results_file
 from sarlink.engine.codes import PRIORITY_CODES
-from sarlink.engine.relays import (
+from sarlink.engine.relays.placement import (
     allocate,
     edge_needs,
     linked,

@@ -39,12 +39,12 @@ from numba import njit
 from ortools.sat.python import cp_model
 from shapely.geometry import MultiPoint, box
 
-from sarlink.engine.relays import TOL
+from sarlink.engine.relays.placement import TOL
 
 
 def chain(length: float, rc: float) -> int:
     """Relays on a straight link of ``length`` m so that each hop is at most ``rc`` (within
-    :data:`sarlink.engine.relays.TOL`)."""
+    :data:`sarlink.engine.relays.placement.TOL`)."""
     return max(0, math.ceil((length - TOL) / rc) - 1)
 
 

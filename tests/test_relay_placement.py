@@ -1,4 +1,4 @@
-"""Where relays stand (engine/relays.py): the tree against scipy, the priorities against the
+"""Where relays stand (engine/relays/placement.py): the tree against scipy, the priorities against the
 slow reference, the assignment against brute force and OR-Tools, the counts against exact
 bounds on the fewest relays (tests/steiner_bounds.py), and the points against the area."""
 
@@ -24,7 +24,7 @@ from sarlink import Mission
 from sarlink.config.region import area_polygon
 from sarlink.engine.area import contains, edge_array
 from sarlink.engine.codes import PRIORITY_CODES
-from sarlink.engine.relays import (
+from sarlink.engine.relays.placement import (
     NUDGE,
     TOL,
     allocate,

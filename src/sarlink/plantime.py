@@ -46,9 +46,10 @@ def plan_cost(mission: Mission, seed: int = 0) -> PlanCost:
     (:attr:`sarlink.mtsp.MtspPlan.evaluations`) and the nodes the rule's route predictions
     expanded in the run (``RunRecord.work``).
     """
-    steering = get_planner(mission.team.planner).steering(mission)  # warms the plan cache
+    searching = mission.searching()
+    steering = get_planner(mission.team.planner).steering(searching)  # warms the plan cache
     planned = sum(len(route) > 0 for route in steering.routes)
-    distributed = steering.distributed(mission.team.drones).any()
+    distributed = steering.distributed(searching.team.drones).any()
     prepared = prepare(mission)
     prepared.run_record(seed, 0)  # compile or load the kernels outside the timing
     if planned:

@@ -44,7 +44,7 @@ def warm_up(planner: str, radio: str, *, ranges: bool = False) -> None:
 
 def prepare(mission: Mission) -> Prepared:
     """Kernel inputs for ``mission``, steered by its planner, to run many times."""
-    return Prepared.build(mission, get_planner(mission.team.planner).steering(mission))
+    return Prepared.build(mission, get_planner(mission.team.planner).steering(mission.searching()))
 
 
 def simulate(mission: Mission, seed: int = 0, run: int = 0, *, scenario: Scenario | None = None,

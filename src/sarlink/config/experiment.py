@@ -35,6 +35,8 @@ takes a millisecond)."""
 
 
 ADDED_LATER: dict[str, dict[str, Any]] = {
+    "team": {"relays": 0, "relay_strategy": "tree", "relay_priority": "nearest-first",
+             "relay_estimate": "reckoned"},
     "channel": {"radio": None, "decorrelation": 50.0},
     "readings": EARLIER_CHOICES,
 }

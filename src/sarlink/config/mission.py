@@ -78,6 +78,35 @@ class Team(Checked):
         description="with on_detect = report, who reports: every drone that knows the "
         "target's location, or only the first detector",
     )
+    relays: int = Field(
+        0, ge=0, strict=True,
+        description="relay drones among the team's drones: the last ones, which keep the "
+        "searchers linked to the BS instead of searching (beyond the paper; docs/model.md, "
+        "Relays); 0: every drone searches",
+    )
+    relay_strategy: str = Field(
+        "tree", min_length=1,
+        description="where relays stand, by name (sarlink.relay_strategy_names()): tree, the "
+        "bounded-edge Steiner tree over the BS and the searchers where it last heard of them",
+    )
+    relay_priority: Literal["nearest-first", "most-connected", "k-bottleneck"] = Field(
+        "nearest-first",
+        description="with fewer relays than the tree needs, whom they connect: the searchers "
+        "needing fewest relays first, the most searchers, or the shortest longest hop",
+    )
+    relay_estimate: Literal["reckoned", "heard"] = Field(
+        "reckoned",
+        description="where the relays' tree puts a searcher the BS has not heard since: "
+        "dead reckoning from its last hearing (on along its route or heading), or where it "
+        "was last heard",
+    )
+
+    @model_validator(mode="after")
+    def _searchers_left(self) -> Self:
+        if self.relays >= self.drones:
+            raise ValueError(f"team.relays = {self.relays} leaves no searcher among "
+                             f"team.drones = {self.drones}; allowed: 0 to {self.drones - 1}")
+        return self
 
 
 
@@ -383,6 +412,13 @@ class Mission(Checked):
         every = self.steps(self.timing.checkpoint)
         steps = list(range(0, self.n_steps + 1, every))
         return steps if steps[-1] == self.n_steps else [*steps, self.n_steps]
+
+    def searching(self) -> Mission:
+        """The mission its planner plans: the searchers alone (``team.drones - team.relays``
+        drones, no relays); the relays are the team's last drones (docs/model.md, Relays)."""
+        if self.team.relays == 0:
+            return self
+        return self.replace(drones=self.team.drones - self.team.relays, relays=0)
 
     def steps(self, seconds: float) -> int:
         """A duration in whole time increments (durations are validated as multiples of dt)."""

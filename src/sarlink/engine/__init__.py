@@ -2,16 +2,19 @@
 
 It takes a mission and a :class:`Steering` (rule and routes); the planners that make
 steerings live above it (:mod:`sarlink.planners`, :mod:`sarlink.simulation`). Its plug-in
-seams are :class:`DistributedRule` and :class:`RadioModel` (docs/plugins.md).
+seams are :class:`DistributedRule`, :class:`RadioModel` and :class:`RelayStrategy`
+(docs/plugins.md).
 """
 
-from sarlink.engine.hooks import DistributedRule, RadioModel
+from sarlink.engine.hooks import DistributedRule, RadioModel, RelayStrategy
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import Params
 from sarlink.engine.radios import get_radio, radio_names, register_radio
+from sarlink.engine.relays import get_relay_strategy, register_relay_strategy, relay_strategy_names
 from sarlink.engine.run import Prepared
 from sarlink.engine.scenario import Scenario
 from sarlink.engine.steering import Steering
 
-__all__ = ["DistributedRule", "Observation", "Params", "Prepared", "RadioModel", "Scenario",
-           "Steering", "get_radio", "radio_names", "register_radio"]
+__all__ = ["DistributedRule", "Observation", "Params", "Prepared", "RadioModel",
+           "RelayStrategy", "Scenario", "Steering", "get_radio", "get_relay_strategy",
+           "radio_names", "register_radio", "register_relay_strategy", "relay_strategy_names"]

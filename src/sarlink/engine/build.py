@@ -1,7 +1,8 @@
-"""The kernel compiled for one distributed rule and one radio model.
+"""The kernel compiled for one distributed rule, one radio model and one relay strategy.
 
 The kernel (:mod:`sarlink.engine.kernel`) is a template whose plug-in block imports the hooks
-of the rule and the radio model (:mod:`sarlink.engine.hooks`). For each pair, this module
+of the rule, the radio model and the relay strategy (:mod:`sarlink.engine.hooks`; a team
+without relays has none, and its kernel is compiled without the relay seam). For each, this module
 writes the template with that block replaced into ``<cache>/kernels/`` (:func:`cache_root`)
 and imports it; Numba's disk cache then keeps its machine code beside it. The file is named
 after a digest of every source the kernel depends on (the engine's modules, the hooks'
@@ -32,7 +33,14 @@ from filelock import FileLock
 
 from sarlink.cachedir import cache_root
 from sarlink.engine import kernel as template
-from sarlink.engine.hooks import DistributedRule, RadioModel, python_function, radio_identity
+from sarlink.engine.hooks import (
+    DistributedRule,
+    RadioModel,
+    RelayStrategy,
+    python_function,
+    radio_identity,
+)
+from sarlink.engine.relays import none as no_relays
 from sarlink.engine.rules import none
 
 ENGINE = Path(__file__).resolve().parent
@@ -55,12 +63,13 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
             f"if hasattr(_{alias}, 'py_func') else _{alias})"]
 
 
-def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
-                 scans_ranges: bool = True) -> str:
-    """The template's plug-in block for ``rule`` (``None``: a team of routes only) and
-    ``radio``. The range scan (:mod:`sarlink.engine.critical_ranges`, inlined: most
-    of a kernel's compile time after the rule) is compiled only into a kernel whose team may
-    fly the same at every range, and if ``scans_ranges``."""
+def plugin_block(rule: DistributedRule | None, radio: RadioModel,
+                 relays: RelayStrategy | None = None, *, scans_ranges: bool = True) -> str:
+    """The template's plug-in block for ``rule`` (``None``: a team of routes only), ``radio``
+    and ``relays`` (``None``: a team without relays, ``RELAYS = False``). The range scan
+    (:mod:`sarlink.engine.critical_ranges`, inlined: most of a kernel's compile time after the
+    rule) is compiled only into a kernel whose team may fly the same at every range (no
+    relays: their points depend on the range), and if ``scans_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}
     defaults: dict[str, Callable[..., Any]] = {
         "rule_prepare": none.prepare, "rule_due": none.due, "rule_decide": none.decide}
@@ -69,11 +78,15 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel, *,
         lines += _hook_lines(alias, hooks.get(alias) or default)
     for name, fn in radio.hooks().items():
         lines += _hook_lines("radio_" + name, fn)
+    relay_hooks = relays.hooks() if relays else {}
+    for name, default in (("place", no_relays.place), ("prepare", no_relays.prepare)):
+        lines += _hook_lines("relay_" + name, relay_hooks.get(name) or default)
     if isinstance(radio.static, bool):
         lines += ["", "", "@njit(inline='always')", "def radio_static(p, rp):",
                   f"    return {radio.static}", ""]
-    range_free = radio.range_free and (rule is None or rule.range_free)
-    lines += [f"RULE_DUE = {rule is not None and rule.due is not None}",
+    range_free = radio.range_free and (rule is None or rule.range_free) and relays is None
+    lines += [f"RELAYS = {relays is not None}",
+              f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
               f"SCANS_RANGES = {scans_ranges and range_free}",
               "# ---- end of plug-ins ----", ""]
@@ -97,23 +110,26 @@ def stepping_source(text: str) -> str:
     return text
 
 
-def kernel_source(rule: DistributedRule | None, radio: RadioModel, *, cache: bool = True,
+def kernel_source(rule: DistributedRule | None, radio: RadioModel,
+                  relays: RelayStrategy | None = None, *, cache: bool = True,
                   stepping: bool = False) -> str:
-    """The text of the kernel module for ``rule`` and ``radio`` (its stepping form if
-    ``stepping``)."""
-    block = plugin_block(rule, radio, scans_ranges=not stepping)  # an environment never scans
+    """The text of the kernel module for ``rule``, ``radio`` and ``relays`` (its stepping
+    form if ``stepping``)."""
+    block = plugin_block(rule, radio, relays, scans_ranges=not stepping)  # an environment never scans
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)
     return text if cache else text.replace("cache=True", "cache=False")
 
 
-def _sources(rule: DistributedRule | None, radio: RadioModel) -> list[Path]:
+def _sources(rule: DistributedRule | None, radio: RadioModel,
+             relays: RelayStrategy | None = None) -> list[Path]:
     """Every file the kernel's machine code depends on: the engine's, and those of the hooks'
     modules with the modules beside them in their package (ConCov's hooks call ConB's and
     CovB's, :mod:`sarlink.planners.rules`)."""
     files = set(ENGINE.rglob("*.py"))
-    hooks = [*(rule.hooks().values() if rule else ()), *radio.hooks().values()]
+    hooks = [*(rule.hooks().values() if rule else ()), *radio.hooks().values(),
+             *(relays.hooks().values() if relays else ())]
     for fn in hooks:
         if fn is not None:
             py = python_function(fn)
@@ -126,10 +142,11 @@ def _sources(rule: DistributedRule | None, radio: RadioModel) -> list[Path]:
     return sorted(files)
 
 
-def kernel_digest(rule: DistributedRule | None, radio: RadioModel, text: str) -> str:
+def kernel_digest(rule: DistributedRule | None, radio: RadioModel, text: str,
+                  relays: RelayStrategy | None = None) -> str:
     """SHA-256 (16 hex digits) of the generated text and every source it depends on."""
     digest = hashlib.sha256(text.encode())
-    for path in _sources(rule, radio):  # by content and name: clones share compiled kernels
+    for path in _sources(rule, radio, relays):  # by content and name: clones share compiled kernels
         digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:16]
 
@@ -171,9 +188,11 @@ def _slug(name: str) -> str:
     return re.sub(r"[^0-9a-zA-Z]+", "_", name).strip("_").lower() or "x"
 
 
-def kernel_for(rule: DistributedRule | None, radio: RadioModel, *, cache: bool = True,
+def kernel_for(rule: DistributedRule | None, radio: RadioModel,
+               relays: RelayStrategy | None = None, *, cache: bool = True,
                stepping: bool = False) -> Callable[..., Any]:
-    """``simulate_kernel`` compiled for ``rule`` and ``radio`` (lazily, on the first call).
+    """``simulate_kernel`` compiled for ``rule``, ``radio`` and ``relays`` (``None``: a team
+    without relays) (lazily, on the first call).
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
     ``stepping=True`` gives the stepping form (:func:`stepping_source`): a generator of the
@@ -181,14 +200,16 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel, *, cache: bool =
     decisions; ``rule`` then gives only the schedule (``prepare``, ``due``, ``near``): its
     ``decide`` is not called.
     """
-    key = (rule, radio_identity(radio), cache, stepping)  # disc and shadowing share a kernel
+    key = (rule, radio_identity(radio), relays, cache, stepping)  # disc, shadowing share one
     if key not in _MEMO:
         if stepping and rule is not None:
             rule = dataclasses.replace(rule, decide=none.decide)
-        text = kernel_source(rule, radio, cache=cache, stepping=stepping)
-        digest = kernel_digest(rule, radio, text)
+        text = kernel_source(rule, radio, relays, cache=cache, stepping=stepping)
+        digest = kernel_digest(rule, radio, text, relays)
         form = "_steps" if stepping else ""
-        name = f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{form}_{digest}"
+        relayed = f"_relays_{_slug(relays.name)}" if relays else ""
+        name = (f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{relayed}{form}_"
+                f"{digest}")
         if cache:
             path = cache_root() / "kernels" / f"{name}.py"
             _write_once(path, text)

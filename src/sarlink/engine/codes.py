@@ -10,6 +10,7 @@ class Mode(IntEnum):
     RETURNING = 1  # out of budget: flying straight home
     LANDED = 2  # at the BS; still relays
     REPORTING = 3  # knows the target, the BS does not: flying straight to the BS to tell it
+    RELAYING = 4  # a relay drone: flying to, or holding, its point of the searchers' link
 
 
 class Look(IntEnum):
@@ -210,3 +211,13 @@ class Priority(IntEnum):
 
 PRIORITY_CODES = {"nearest-first": Priority.NEAREST, "most-connected": Priority.MOST,
                   "k-bottleneck": Priority.BOTTLENECK}
+
+
+class Estimate(IntEnum):
+    """Where the BS believes a searcher out of contact (docs/model.md, Relays)."""
+
+    RECKONED = 0  # dead reckoning from its last hearing: on along its route or heading
+    HEARD = 1  # where it was last heard
+
+
+ESTIMATE_CODES = {"reckoned": Estimate.RECKONED, "heard": Estimate.HEARD}

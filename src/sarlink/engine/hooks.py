@@ -1,6 +1,7 @@
-"""The engine's plug-in seams: a distributed rule and a radio model (docs/plugins.md).
+"""The engine's plug-in seams: a distributed rule, a radio model and a relay strategy
+(docs/plugins.md).
 
-Both are plain descriptions of Numba-compilable functions. The kernel is compiled once per
+All are plain descriptions of Numba-compilable functions. The kernel is compiled once per
 pair of rule and radio model with their functions inlined (:mod:`sarlink.engine.build`), so a
 plug-in runs at the speed of the built-in ones, which are written on these same seams
 (:mod:`sarlink.planners.rules`, :mod:`sarlink.engine.radios`).
@@ -20,7 +21,13 @@ Hook signatures (``p`` is :class:`~sarlink.engine.params.Params`, ``obs`` an
 - radio ``update(thr2, p, rp, k, rng) -> None``: refill ``thr2`` at step ``k`` where it changes;
 - radio ``nominal(p, rp) -> float``: the range planners predict with, m;
 - radio ``static(p, rp) -> bool`` (or a plain ``bool``): whether ``thr2`` never changes after
-  ``init`` (a team that has settled can then jump to the horizon).
+  ``init`` (a team that has settled can then jump to the horizon);
+- relay ``prepare(p, obs) -> ws``: once per run, the strategy's own arrays;
+- relay ``place(k, p, obs, ws, edges, gx, gy) -> None``: every step, the BS's side of the
+  relays: write the point ``(gx[i], gy[i])`` that relay ``i`` (``obs.mode[i] == RELAYING``)
+  is to fly to and hold; ``edges`` is the area (:mod:`sarlink.engine.area`). The kernel
+  delivers a new point only to a relay the BS can reach this step (``obs.routed``), moves
+  points into the area, and flies the relays there.
 
 ``rp`` is the radio's parameter array (``RadioModel.params``).
 """
@@ -39,6 +46,7 @@ if TYPE_CHECKING:
 
 _RULE_HOOKS = {"prepare": 2, "due": 5, "decide": 7}
 _RADIO_HOOKS = {"init": 4, "update": 5, "nominal": 2, "static": 2}
+_RELAY_HOOKS = {"prepare": 2, "place": 7}
 
 
 def python_function(fn: Any) -> Callable[..., Any]:
@@ -133,6 +141,28 @@ class RadioModel:
         """The hook functions by name (a ``bool`` ``static`` is not one)."""
         return {hook: getattr(self, hook) for hook in _RADIO_HOOKS
                 if not isinstance(getattr(self, hook), bool)}
+
+
+@dataclass(frozen=True)
+class RelayStrategy:
+    """Where a team's relay drones stand (``team.relays``, docs/model.md, Relays): their
+    points, chosen at the BS from what it knows of the searchers. Its hooks are compiled
+    into the kernel of a team with relays only: a team without flies the kernel without them.
+    """
+
+    name: str
+    place: Callable[..., Any]
+    prepare: Callable[..., Any] | None = None
+
+    def __post_init__(self) -> None:
+        for hook, arity in _RELAY_HOOKS.items():
+            fn = getattr(self, hook)
+            if fn is not None:
+                check_hook("relay strategy", self.name, hook, fn, arity)
+
+    def hooks(self) -> dict[str, Callable[..., Any] | None]:
+        """The hook functions by name (``None``: the engine's default)."""
+        return {hook: getattr(self, hook) for hook in _RELAY_HOOKS}
 
 
 def radio_identity(radio: RadioModel) -> tuple[object, ...]:

@@ -8,8 +8,8 @@ Each step at ``t = k dt`` observes (sense, links, flooding, records), decides (w
 or updates, the team's rule, the boundary rule) and moves. Node indices: drones ``0 .. N-1``,
 the BS ``N``, the target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
 
-This file is a template: :mod:`sarlink.engine.build` compiles it once per pair of distributed
-rule and radio model (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
+This file is a template: :mod:`sarlink.engine.build` compiles it once per distributed rule,
+radio model and relay strategy (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
 below, into a module of its own in the cache folder, named after the digest of every source it
 depends on (so an edit anywhere recompiles, and every process shares the compiled code).
 The same text also gives the kernel's stepping form (``build.kernel_for(..., stepping=True)``,
@@ -24,6 +24,7 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine import area, critical_ranges, graph, motion, records, sensing
+from sarlink.engine.relays import flight as relay_flight
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -36,15 +37,18 @@ from sarlink.engine.params import (
 from sarlink.engine.records import NEVER, RunRecord
 
 # isort: off
-# ---- plug-ins: this block is replaced per rule and radio model (sarlink.engine.build) ----
+# ---- plug-ins: this block is replaced per rule, radio model and relay strategy (build) ----
 from sarlink.engine.radios.lognormal import init as radio_init
 from sarlink.engine.radios.lognormal import nominal as radio_nominal
 from sarlink.engine.radios.lognormal import static as radio_static
 from sarlink.engine.radios.lognormal import update as radio_update
 from sarlink.engine.rules.none import decide as rule_decide
 from sarlink.engine.rules.none import due as rule_due
+from sarlink.engine.relays.none import place as relay_place
+from sarlink.engine.relays.none import prepare as relay_prepare
 from sarlink.engine.rules.none import prepare as rule_prepare
 
+RELAYS = False
 RULE_DUE = False
 RULE_NEAR = False
 SCANS_RANGES = True
@@ -82,6 +86,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     for i in range(n):
         hx[i], hy[i] = math.cos(heading0[i]), math.sin(heading0[i])
     mode = np.full(n, SEARCHING, dtype=np.int8)
+    if RELAYS:  # compiled only for a team with relays (build)
+        relay_flight.start(p, mode)
     wp_next, wp_end = wp_start[:n].copy(), wp_start[1:].copy()
     on_route = wp_end > wp_next
     for i in range(n):
@@ -101,10 +107,14 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
     rejoin = np.zeros(n, dtype=np.bool_)  # flying back to that point
     goal_x, goal_y = np.full(n, np.nan), np.full(n, np.nan)  # that point, on a polygon area
+    aim_x, aim_y = px[:n].copy(), py[:n].copy()  # the point a relay flies to and holds
     obs = Observation(px, py, pz, hx, hy, mode, on_route, last_change, knows, adj, near, routed,
                       spread, radio_nominal(p, rp), wp, wp_next, wp_end, rng_rule,
                       np.zeros(1, dtype=np.int64))
     ws = rule_prepare(p, obs)
+    if RELAYS:
+        rws = relay_prepare(p, obs)
+        relay_gx, relay_gy = aim_x.copy(), aim_y.copy()  # the strategy's points
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
@@ -192,6 +202,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             rule_decide(k, p, obs, ws, deciding, nhx, nhy)
             if p.turn_error > 0.0:  # the heading a drone flies is not the one commanded
                 motion.turn_errors(p, deciding, hx, hy, nhx, nhy, rng_heading)
+        if RELAYS:  # the BS's points for its relays, and the relays' flight to theirs
+            relay_place(k, p, obs, rws, edges, relay_gx, relay_gy)
+            relay_flight.steer(k, homing, p, px, py, hx, hy, mode, routed, relay_gx, relay_gy,
+                               aim_x, aim_y, nhx, nhy, edges, nav)
         if polygon:  # the boundary rule on the polygon, and the ways round its holes
             area.polygon_rules(k, homing, p, px, py, nhx, nhy, mode, on_route, last_change,
                                edges, nav, rejoin, leave_x, leave_y, goal_x, goal_y, rng_turn)
@@ -201,7 +215,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         hy[:] = nhy
         # ---- move ----
         motion.move(p, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y,
-                    rejoin)
+                    rejoin, aim_x, aim_y)
 
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan

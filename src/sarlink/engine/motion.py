@@ -12,6 +12,7 @@ from sarlink.engine.geometry import inside, turned, unit
 from sarlink.engine.params import (
     DETECTOR_ONLY,
     LANDED,
+    RELAYING,
     REPORTING,
     RETURNING,
     SEARCHING,
@@ -203,9 +204,10 @@ def fly_route(
 def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
          mode: np.ndarray, on_route: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
          wp_end: np.ndarray, leave_x: np.ndarray, leave_y: np.ndarray,
-         rejoin: np.ndarray) -> None:
+         rejoin: np.ndarray, aim_x: np.ndarray, aim_y: np.ndarray) -> None:
     """Move every drone ``V dt``: along its route (back to where it left it first, after
-    reporting), home (landing on arrival), to the BS to report (waiting there), or on.
+    reporting), home (landing on arrival), to the BS to report (waiting there), a relay to
+    its aim (holding it on arrival), or on.
 
     Inlined: it draws no random numbers, and as a call (a dozen arrays, some 100 arguments)
     it cost some 5 % of a CovB run at N = 10.
@@ -241,6 +243,13 @@ def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarr
             if dx * dx + dy * dy <= step * step:
                 px[i], py[i] = p.bs_x, p.bs_y
                 mode[i] = LANDED
+            else:
+                px[i] += step * hx[i]
+                py[i] += step * hy[i]
+        elif mode[i] == RELAYING:
+            dx, dy = aim_x[i] - px[i], aim_y[i] - py[i]
+            if dx * dx + dy * dy <= step * step:
+                px[i], py[i] = aim_x[i], aim_y[i]
             else:
                 px[i] += step * hx[i]
                 py[i] += step * hy[i]

@@ -27,6 +27,7 @@ SEARCHING = int(Mode.SEARCHING)
 RETURNING = int(Mode.RETURNING)
 LANDED = int(Mode.LANDED)
 REPORTING = int(Mode.REPORTING)
+RELAYING = int(Mode.RELAYING)
 REPORT = int(OnDetect.REPORT)
 DETECTOR_ONLY = int(Reporters.DETECTOR)
 PER_PERIOD = int(Look.PER_PERIOD)
@@ -93,3 +94,11 @@ class Params(NamedTuple):
     fade_bias: float
     """Added to every fade's log-range factor: 0 puts the median link range at r_c,
     ``-(sigma ln10 / 5n)² / 2`` the mean link area at the disc's (``shadow_calibration``)."""
+    relays: int
+    """Relay drones, the last ``relays`` of the team (``team.relays``; 0: every drone
+    searches, and the kernel is compiled without the relay seam)."""
+    relay_priority: int
+    """Whom relays too few for the tree connect first (:class:`~sarlink.engine.codes.Priority`)."""
+    relay_estimate: int
+    """Where the BS believes a searcher it has not heard since (``team.relay_estimate``;
+    :class:`~sarlink.engine.codes.Estimate`)."""

@@ -20,22 +20,26 @@ from sarlink.engine.codes import (
     CONNECTED_CODES,
     CONTACTS_CODES,
     COVB_DIRECTION_CODES,
+    ESTIMATE_CODES,
     FALLBACK_CODES,
     ISOLATED_CODES,
     LOOK_CODES,
     ON_DETECT_CODES,
     PARKED_CODES,
     PREDICTION_CODES,
+    PRIORITY_CODES,
     REACHABILITY_CODES,
     REPORTERS_CODES,
     SHADOWING_CODES,
     STOP_CODES,
 )
 from sarlink.engine.critical_ranges import Critical, critical
+from sarlink.engine.hooks import RelayStrategy
 from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
 from sarlink.engine.radios.lognormal import fade_bias
+from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.records import AtRanges, RunRecord
 from sarlink.engine.scenario import HEADING_ERROR, Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
@@ -65,9 +69,11 @@ class Prepared:
 
     @classmethod
     def build(cls, mission: Mission, steering: Steering) -> Prepared:
-        """Kernel inputs for ``mission`` flown with ``steering``: scalars, routes, checkpoints."""
+        """Kernel inputs for ``mission`` flown with ``steering`` (its searchers' steering,
+        :meth:`~sarlink.config.Mission.searching`): scalars, routes, checkpoints."""
         n = mission.team.drones
-        distributed = steering.distributed(n)
+        distributed = np.zeros(n, dtype=bool)  # the relays, last, run no rule
+        distributed[:n - mission.team.relays] = steering.distributed(n - mission.team.relays)
         if steering.rule is None and distributed.any():
             raise ConfigError(f"team.planner {mission.team.planner!r} gave no route to drone "
                               f"{int(np.argmax(distributed))} and has no distributed rule")
@@ -111,6 +117,9 @@ class Prepared:
             turn_error=HEADING_ERROR if r.turns == "jitter" else 0.0,
             fade_bias=fade_bias(mission.channel.sigma, mission.channel.pathloss_exponent,
                                 r.shadow_calibration),
+            relays=mission.team.relays,
+            relay_priority=int(PRIORITY_CODES[mission.team.relay_priority]),
+            relay_estimate=int(ESTIMATE_CODES[mission.team.relay_estimate]),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
@@ -118,9 +127,16 @@ class Prepared:
                    cp_steps=cp_steps, edges=edges, nav=nav, far=far)
 
     @property
+    def relays(self) -> RelayStrategy | None:
+        """The team's relay strategy, or None for a team without relays."""
+        team = self.mission.team
+        return get_relay_strategy(team.relay_strategy) if team.relays else None
+
+    @property
     def kernel(self) -> Any:
-        """The kernel compiled for this team's rule and the mission's radio model."""
-        return kernel_for(self.steering.rule, get_radio(self.mission.radio))
+        """The kernel compiled for this team's rule, the mission's radio model and the team's
+        relay strategy (if it has relays)."""
+        return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays)
 
     def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                   traced_at: float | None = None, scan_at: Sequence[float] = ()
@@ -215,6 +231,7 @@ class Prepared:
         (:meth:`run_ranges`)."""
         rule = self.steering.rule
         return (get_radio(self.mission.radio).range_free and self.params.on_detect != REPORT
+                and self.params.relays == 0
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
     def _own(self, seed: int, run: int) -> Prepared:

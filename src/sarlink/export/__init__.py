@@ -110,7 +110,7 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
         raise ConfigError(f"--altitude must be a height above the BS > 0 m, got {altitude:g}")
     frame = mission_frame(mission)
     fence = mission_fence(mission, frame)
-    steering = get_planner(mission.team.planner).steering(mission)
+    steering = get_planner(mission.team.planner).steering(mission.searching())
     n, speed = mission.team.drones, mission.team.speed
     bs = np.asarray(mission.area.bs_xy, dtype=float)
     home = (float(frame.anchor[0]), float(frame.anchor[1]))

@@ -45,7 +45,7 @@ def scene(result: RunResult, mission: Mission, title: str | None = None,
         raise ValueError("a replay needs a result simulated with trajectory=True")
     bs = mission.area.bs_xy
     tours = [[list(bs), *route.tolist()]
-             for route in get_planner(mission.team.planner).steering(mission).routes
+             for route in get_planner(mission.team.planner).steering(mission.searching()).routes
              if len(route)]
     return {
         "title": title or describe(mission, result),
