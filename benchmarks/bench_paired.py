@@ -42,7 +42,7 @@ import numpy as np
 
 import results_file
 from sarlink import Mission, prepare
-from sarlink.config.readings import EARLIER_CHOICES
+from sarlink.config.experiment import ADDED_LATER
 from sarlink.engine.build import kernel_for
 from sarlink.engine.radios import get_radio
 from sarlink.engine.streams import run_streams
@@ -139,14 +139,15 @@ def sides(rev: str, folder: Path) -> dict[str, Side]:
         """The case as the old revision's mission: choices named since are left out where
         they hold the behaviour of before (else the revision cannot fly the case)."""
         data = case_mission(case, reading).model_dump(exclude={"channel": {"radio"}})
-        known = old.config.mission.Readings.model_fields
-        for choice, value in list(data["readings"].items()):
-            if choice not in known:
-                if EARLIER_CHOICES.get(choice) != value:
-                    raise SystemExit(f"{rev} cannot fly {choice} = {value!r}")
-                del data["readings"][choice]
-        if "decorrelation" not in old.config.mission.Channel.model_fields:
-            del data["channel"]["decorrelation"]  # read only by correlated fades
+        for group, fields in data.items():
+            if not isinstance(fields, dict):
+                continue
+            known = old.config.mission.Mission.model_fields[group].annotation.model_fields
+            for name, value in list(fields.items()):
+                if name not in known:
+                    if ADDED_LATER.get(group, {}).get(name, ...) != value:
+                        raise SystemExit(f"{rev} cannot fly {group}.{name} = {value!r}")
+                    del fields[name]
         return old.Mission(**data)
 
     return {"old": Side(old_mission, old.prepare), "new": Side(case_mission, prepare,
