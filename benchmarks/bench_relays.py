@@ -1,5 +1,5 @@
-"""Relay placement (:mod:`sarlink.engine.relays.placement`): what one re-plan costs, how many relays the
-MST heuristic asks for against the fewest that would do, and whom each priority connects.
+"""Relay placement (:mod:`sarlink.engine.relays.placement`): what one re-plan costs, how many
+relays the MST heuristic asks for against the fewest that would do, and whom each priority connects.
 
 1. The time of one re-plan (tree, points, assignment: :func:`sarlink.engine.relays.placement.plan`)
    for teams of N_m = 4 to 30 drones, half of them relays, over random searcher and relay

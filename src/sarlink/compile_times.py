@@ -33,7 +33,8 @@ def _name(part: tuple[str, ...]) -> str:
     if part[0] == "ranges":
         return "staircase"
     rule = get_planner(part[1]).rule
-    return f"kernel {rule.name if rule is not None else 'routes'}"
+    relays = f" with relays ({part[3]})" if len(part) > 3 else ""
+    return f"kernel {rule.name if rule is not None else 'routes'}{relays}"
 
 
 def _file() -> Path:

@@ -41,6 +41,7 @@ from sarlink.config.experiment import MAX_WORKERS
 from sarlink.engine.build import kernel_for, on_disk
 from sarlink.engine.hooks import radio_identity
 from sarlink.engine.radios import get_radio
+from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner
 from sarlink.progress import progress as progress_bars
@@ -178,7 +179,7 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> float:
 
         solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
     else:
-        warm_up(part[1], part[2], ranges=part[0] == "ranges")
+        warm_up(part[1], part[2], ranges=part[0] == "ranges", relays=_relays(part))
     return time.perf_counter() - start
 
 
@@ -193,7 +194,14 @@ def _compiled(part: tuple[str, ...]) -> bool:
         from sarlink.engine.critical_ranges import critical
 
         return on_disk(critical)
-    return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2])))
+    relays = _relays(part)
+    return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2]),
+                              get_relay_strategy(relays) if relays else None))
+
+
+def _relays(part: tuple[str, ...]) -> str | None:
+    """The relay strategy a kernel part names (its fourth item), None for a team without."""
+    return part[3] if len(part) > 3 else None
 
 
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
@@ -201,13 +209,15 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
     (one per rule and radio model), and the scan of the staircase if a job asks for it
     whose team may fly once for every range (after the kernels, whose first compile also
-    compiles what they share; the others' rows have no staircase)."""
+    compiles what they share; the others' rows have no staircase). A kernel part names its
+    planner and radio model, and its relay strategy if its team has relays."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()
     kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
     for m in missions:
         rule = get_planner(m.team.planner).rule
-        kernels.setdefault((rule, radio_identity(get_radio(m.radio))),
-                           ("kernel", m.team.planner, m.radio))
+        relays = (m.team.relay_strategy,) if m.team.relays else ()
+        kernels.setdefault((rule, radio_identity(get_radio(m.radio)), *relays),
+                           ("kernel", m.team.planner, m.radio, *relays))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
     shared = next((t.point.mission for job in jobs for t in job
                    if t.staircase and _may_share(t.point.mission)), None)

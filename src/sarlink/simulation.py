@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine import Prepared, Scenario, Steering, get_radio
+from sarlink.engine import Prepared, Scenario, Steering, get_radio, get_relay_strategy
 from sarlink.planners import get_planner
 from sarlink.registry import Plugins, adopt_plugins, plugins_in_code
 from sarlink.result import RunResult
@@ -19,20 +19,26 @@ __all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prep
 
 
 def check_mission(mission: Mission) -> None:
-    """Raise a :class:`~sarlink.ConfigError` unless the mission's planner and radio model are
-    known: what cannot be checked before plug-ins are loaded, checked where work starts."""
+    """Raise a :class:`~sarlink.ConfigError` unless the mission's planner, radio model and
+    relay strategy (if it has relays) are known: what cannot be checked before plug-ins are
+    loaded, checked where work starts."""
     get_planner(mission.team.planner)
     get_radio(mission.radio)
+    if mission.team.relays:
+        get_relay_strategy(mission.team.relay_strategy)
 
 
-def warm_up(planner: str, radio: str, *, ranges: bool = False) -> None:
-    """Compile (or load from the disk cache) the kernel of ``planner``'s rule and the radio
-    model ``radio``, by flying one tiny run that needs no plan; with ``ranges``, also the
-    scan of one flight's staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`),
-    from a drone on a route, which flies the same at every range under any rule's kernel."""
+def warm_up(planner: str, radio: str, *, ranges: bool = False,
+            relays: str | None = None) -> None:
+    """Compile (or load from the disk cache) the kernel of ``planner``'s rule, the radio
+    model ``radio`` and the relay strategy ``relays`` (None: a team without relays), by
+    flying one tiny run that needs no plan; with ``ranges``, also the scan of one flight's
+    staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`), from a drone on a
+    route, which flies the same at every range under any rule's kernel."""
     rule = get_planner(planner).rule
-    mission = Mission.build(planner=planner, drones=1, horizon=10.0, radio=radio,
-                            sigma=0.0 if radio == "disc" else 1.0)
+    team = {"drones": 2, "relays": 1, "relay_strategy": relays} if relays else {"drones": 1}
+    mission = Mission.build(planner=planner, horizon=10.0, radio=radio,
+                            sigma=0.0 if radio == "disc" else 1.0, **team)
     route = (np.array([mission.area.bs_xy]),)
     if ranges:
         steering = Steering(rule=rule, routes=route)

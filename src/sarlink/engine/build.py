@@ -115,7 +115,7 @@ def kernel_source(rule: DistributedRule | None, radio: RadioModel,
                   stepping: bool = False) -> str:
     """The text of the kernel module for ``rule``, ``radio`` and ``relays`` (its stepping
     form if ``stepping``)."""
-    block = plugin_block(rule, radio, relays, scans_ranges=not stepping)  # an environment never scans
+    block = plugin_block(rule, radio, relays, scans_ranges=not stepping)  # an env never scans
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)

@@ -24,7 +24,6 @@ import numpy as np
 from numba import njit
 
 from sarlink.engine import area, critical_ranges, graph, motion, records, sensing
-from sarlink.engine.relays import flight as relay_flight
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -35,6 +34,7 @@ from sarlink.engine.params import (
     Params,
 )
 from sarlink.engine.records import NEVER, RunRecord
+from sarlink.engine.relays import flight as relay_flight
 
 # isort: off
 # ---- plug-ins: this block is replaced per rule, radio model and relay strategy (build) ----

@@ -39,8 +39,8 @@ from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
 from sarlink.engine.radios.lognormal import fade_bias
-from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.records import AtRanges, RunRecord
+from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.scenario import HEADING_ERROR, Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
 from sarlink.engine.streams import Streams, copied, run_streams

@@ -1,6 +1,7 @@
 """The relays in the kernel: who they are, which points reach them, and how they fly there
-(docs/model.md, Relays). The strategy proposes points (:class:`~sarlink.engine.hooks.RelayStrategy`);
-this module is what a drone can do with them, whatever the strategy."""
+(docs/model.md, Relays). The strategy proposes points
+(:class:`~sarlink.engine.hooks.RelayStrategy`); this module is what a drone can do with them,
+whatever the strategy."""
 
 from __future__ import annotations
 

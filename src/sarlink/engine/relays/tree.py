@@ -15,14 +15,12 @@ position, heading and route. Where it believes a drone it has not heard since is
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
 
+from sarlink.engine.codes import Estimate
 from sarlink.engine.graph import has
 from sarlink.engine.observation import Observation
-from sarlink.engine.codes import Estimate
 from sarlink.engine.params import LANDED, RELAYING, REPORTING, RETURNING, Params
 from sarlink.engine.relays.placement import dist, plan
 
