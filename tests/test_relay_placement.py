@@ -1,6 +1,7 @@
-"""Where relays stand (engine/relays/placement.py): the tree against scipy, the priorities against the
-slow reference, the assignment against brute force and OR-Tools, the counts against exact
-bounds on the fewest relays (tests/steiner_bounds.py), and the points against the area."""
+"""Where relays stand (engine/relays/placement.py): the tree against scipy, the priorities
+against the slow reference, the assignment against brute force and OR-Tools, the counts
+against exact bounds on the fewest relays (tests/steiner_bounds.py), and the points against
+the area."""
 
 from __future__ import annotations
 
