@@ -3,16 +3,31 @@
 Written from the model's text, not from the kernel: angles instead of unit vectors, sets and
 a breadth-first search instead of bitsets, one function per rule. It draws its random numbers
 from the same per-purpose streams in the same order as the engine, so the two can be compared
-run by run as well as statistically. Distributed planners only (no mTSP routes).
+run by run as well as statistically. The square area only (no polygons); the distributed
+planners (CovB, ConB, ConCov), or routes given to it (a route planner's, as the engine plans
+them: the reference flies them, the planning is checked in tests/test_mtsp*.py).
+
+Relays (``team.relays``, docs/model.md, Relays) are flown here from the model's text: the
+BS's hearing, its dead reckoning, the re-plan's terminals, delivery, homing and the flight.
+The re-plan itself (the tree, the priority and the bottleneck assignment) is the engine's own
+placement, run as plain Python (``plan.py_func``): :func:`relay_plan` below has no branch
+points, no assignment and no points, so it is no plan the engine would make;
+tests/test_relay_placement.py checks the placement on its own (against :func:`relay_plan`,
+brute force, OR-Tools and exact bounds).
 """
 
 from __future__ import annotations
 
 import math
 from collections import deque
+from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from sarlink.config import Mission
+from sarlink.engine.codes import PRIORITY_CODES
+from sarlink.engine.relays.placement import plan
 from sarlink.engine.streams import run_streams
 
 
@@ -79,7 +94,10 @@ def network(linked: list[list[bool]], base: list[bool], where: list[tuple[float,
             max((_dist(where[i], bs) for i in out), default=0.0))
 
 
-def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) -> NaiveResult:
+def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
+                   routes: Sequence[np.ndarray] = ()) -> NaiveResult:
+    """Run ``run`` of ``mission`` (seeded with ``seed``); ``routes``: each searcher's waypoints
+    (``(k, 2)``, ending at the BS) for a route planner, none for CovB, ConB and ConCov."""
     a = mission.area.size
     bs = mission.area.bs_xy
     n = mission.team.drones
@@ -90,22 +108,40 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
     planner = mission.team.planner
     alpha = {"covb": 1.0, "conb": 0.0}.get(planner, mission.team.alpha)
     readings = mission.readings
+    searchers = n - mission.team.relays  # the relays are the team's last drones
+    rule = planner in ("covb", "conb", "concov")
+    route = [[(float(x), float(y)) for x, y in routes[i]] if i < len(routes) else []
+             for i in range(n)]
+    if rule == any(route):
+        raise ValueError(f"the reference flies CovB, ConB and ConCov without routes, and any "
+                         f"other planner with its routes given; got {planner!r} with "
+                         f"{sum(map(bool, route))} routes")
     streams = run_streams(seed, run)
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
     BS, TG = n, n + 1
 
     pos = [bs] * n
-    heading = [2 * math.pi * k / n + offset for k in range(n)]
-    if readings.takeoff != "even":  # one uniform number per drone from the take-off stream
+    free = [i for i in range(searchers) if not route[i]]  # the drones the rule steers
+    heading = [0.0] * n  # route drones and relays: east, until they turn
+    for k, i in enumerate(free):
+        heading[i] = 2 * math.pi * k / len(free) + offset
+    if readings.takeoff != "even" and free:  # one uniform number per drone, take-off stream
         u = [streams.takeoff.random() for _ in range(n)]
-        if readings.takeoff == "random":
-            heading = [2 * math.pi * x for x in u]
-        else:  # each off by at most 5 degrees (docs/model.md)
-            heading = [h + math.radians(5.0) * (2 * x - 1) for h, x in zip(heading, u,
-                                                                            strict=True)]
+        for i in free:
+            if readings.takeoff == "random":
+                heading[i] = 2 * math.pi * u[i]
+            else:  # each off by at most 5 degrees (docs/model.md)
+                heading[i] += math.radians(5.0) * (2 * u[i] - 1)
+    wp_next = [0] * n  # each route drone's next waypoint
+    for i in range(searchers):
+        if route[i] and route[i][0] != bs:  # towards the first waypoint
+            heading[i] = math.atan2(route[i][0][1] - bs[1], route[i][0][0] - bs[0])
     last_change = [0.0] * n
-    mode = ["search"] * n
+    mode = ["search"] * searchers + ["relaying"] * (n - searchers)
+    aim = list(pos)  # the point each relay flies to and holds
+    points = list(pos)  # the point the BS last planned for each relay
+    heard: list[tuple[float, float, float, int, int]] = []  # x, y, heading, step, next waypoint
     knows = [False] * n
     in_range = [False] * n
     pass_start = [0.0] * n
@@ -235,6 +271,72 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             lo, hi = corners[frozenset(walls)] if len(walls) == 2 else arcs[next(iter(walls))]
             h = lo + streams.turn.random() * (hi - lo)
 
+    def length(x: float, y: float) -> float:
+        """The length of ``(x, y)``, in the engine's arithmetic (its distances' last bits)."""
+        return math.sqrt(x * x + y * y)
+
+    def clamp(p: tuple[float, float]) -> tuple[float, float]:
+        """The nearest point of the square area."""
+        return min(max(p[0], 0.0), a), min(max(p[1], 0.0), a)
+
+    def reckoned(i: int, k: int) -> tuple[float, float]:
+        """Where the BS believes drone ``i`` at step ``k``, by dead reckoning from when it
+        last heard it: on along its route at V_m if it flies one, straight home if it flies
+        home, else on along the heading it was heard with (into the area)."""
+        x, y, h, when, w = heard[i]
+        travel = v * dt * (k - when)
+        if travel <= 0:
+            return x, y
+        if route[i]:
+            for wx, wy in route[i][w:]:
+                d = length(wx - x, wy - y)
+                if d > travel:
+                    return x + travel * (wx - x) / d, y + travel * (wy - y) / d
+                x, y, travel = wx, wy, travel - d
+            return x, y
+        if mode[i] == "returning":
+            d = length(bs[0] - x, bs[1] - y)
+            if d <= travel:
+                return bs
+            return x + travel * (bs[0] - x) / d, y + travel * (bs[1] - y) / d
+        return clamp((x + travel * math.cos(h), y + travel * math.sin(h)))
+
+    def hold_the_link(k: int, t: float, routed: set[int], new: list[float]) -> None:
+        """The relays' part of step ``k``'s decisions: the BS hears every drone with a route
+        to it (everyone at take-off); every t_s it plans a point for each relay, the tree over
+        itself and the searchers in the air (neither relaying nor landed: those flying home
+        too) where it believes them (``team.relay_estimate``: where last heard, or reckoned)
+        from where it last heard its relays; a relay it reaches takes its point (into the
+        area: one it does not keeps its aim); a relay whose budget is due turns home, the
+        others head straight for their aim."""
+        for i in range(n):
+            if k == 0 or i in routed:
+                heard[i] = (pos[i][0], pos[i][1], heading[i], k, wp_next[i])
+        if k % round(ts / dt) == 0:
+            airborne = [i for i in range(n) if mode[i] not in ("relaying", "landed")]
+            holding = [i for i in range(n) if mode[i] == "relaying"]
+            where = [bs, *(heard[i][:2] if mission.team.relay_estimate == "heard"
+                           else reckoned(i, k) for i in airborne)]
+            gx, gy, *_ = plan.py_func(
+                np.array([w[0] for w in where]), np.array([w[1] for w in where]), 0, rc,
+                np.array([heard[i][0] for i in holding]),
+                np.array([heard[i][1] for i in holding]),
+                int(PRIORITY_CODES[mission.team.relay_priority]), a, np.empty((0, 4)))
+            for j, i in enumerate(holding):
+                points[i] = (float(gx[j]), float(gy[j]))
+        for i in range(n):
+            if mode[i] != "relaying":
+                continue
+            if i in routed:
+                aim[i] = clamp(points[i])
+            home = _dist(pos[i], bs)
+            if (mission.team.flight_time - t) - home / v < 2 * dt:
+                mode[i] = "returning"
+                new[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
+            elif aim[i] != pos[i]:
+                new[i] = math.atan2(aim[i][1] - pos[i][1], aim[i][0] - pos[i][0])
+
+    heard = [(bs[0], bs[1], heading[i], 0, 0) for i in range(n)]
     for k in range(steps + 1):
         t = k * dt
         # observe
@@ -295,12 +397,12 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
         new = list(heading)
 
         routed_next: set[int] | None = None
-        continuous = alpha < 1 and readings.conb_check == "continuous"
+        continuous = rule and alpha < 1 and readings.conb_check == "continuous"
         if continuous:  # routed at every increment up to t + t_s
             routed_next = set.intersection(*(predicted(s * dt) for s in
                                              range(1, round(ts / dt) + 1)))
         for i in range(n):
-            if mode[i] != "search":
+            if mode[i] != "search" or route[i]:
                 continue
             home = _dist(pos[i], bs)
             if (mission.team.flight_time - t) - home / v < 2 * dt:
@@ -338,6 +440,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             if h2 != h:
                 last_change[i] = t
             new[i] = h2
+        if searchers < n:
+            hold_the_link(k, t, routed, new)
         heading = new
 
         # move
@@ -347,6 +451,28 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False) 
             if mode[i] == "returning" and _dist(pos[i], bs) <= v * dt:
                 pos[i] = bs
                 mode[i] = "landed"
+                continue
+            if mode[i] == "relaying":
+                dx, dy = aim[i][0] - pos[i][0], aim[i][1] - pos[i][1]
+                step = v * dt
+                pos[i] = aim[i] if dx * dx + dy * dy <= step * step else (
+                    pos[i][0] + step * (dx / length(dx, dy)),
+                    pos[i][1] + step * (dy / length(dx, dy)))
+                continue
+            if route[i]:  # on along the waypoints, landing after the last
+                travel = v * dt
+                while travel > 0 and mode[i] != "landed":
+                    w = route[i][wp_next[i]]
+                    d = length(w[0] - pos[i][0], w[1] - pos[i][1])
+                    heading[i] = math.atan2(w[1] - pos[i][1], w[0] - pos[i][0])
+                    if d > travel:
+                        pos[i] = (pos[i][0] + travel * (w[0] - pos[i][0]) / d,
+                                  pos[i][1] + travel * (w[1] - pos[i][1]) / d)
+                        break
+                    pos[i], travel = w, travel - d
+                    wp_next[i] += 1
+                    if wp_next[i] == len(route[i]):
+                        mode[i] = "landed"
                 continue
             pos[i] = (pos[i][0] + v * dt * math.cos(heading[i]),
                       pos[i][1] + v * dt * math.sin(heading[i]))

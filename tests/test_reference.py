@@ -133,3 +133,56 @@ def test_the_bs_network_of_route_teams_is_the_reference_search_on_the_flown_grap
             assert fast.farthest[c] == pytest.approx(want[1], rel=1e-12), t  # Numba's hypot
             mixed += bool(landed.any() and not landed.all())
     assert mixed > 0
+
+
+
+RELAY_RUNS = 16
+RELAY_CASES = {
+    "covb-reckoned": {"planner": "covb"},
+    "covb-reckoned-k-bottleneck": {"planner": "covb", "relay_priority": "k-bottleneck"},
+    "covb-most-connected-landing": {"planner": "covb", "relay_priority": "most-connected",
+                                    "flight_time": 700.0},
+    "mtsp-reckoned": {"planner": "mtsp", "mtsp_plan": "shared", "iterations": 200},
+    "mtsp-heard": {"planner": "mtsp", "mtsp_plan": "shared", "iterations": 200,
+                   "relay_estimate": "heard"},
+}
+"""CovB with ``relay_estimate = heard`` is left out: its searchers are last heard within
+r_c of the BS (they fly out radially, and nothing brings them back into contact), so the tree
+needs no relay and the relays never leave the BS."""
+
+
+@pytest.mark.parametrize("case", RELAY_CASES)
+def test_relays_agree_with_the_reference_run_by_run(case: str) -> None:
+    """Five searchers and three relays (r_c = 500 m, the square; mTSP with a plan of its own
+    per run): the reference flies the relays from the model's text (the BS's hearing, its
+    estimate of the searchers, the re-plan every t_s, delivery to the relays it reaches,
+    homing), the engine through its relay seam; in all but a few runs (knife edges, above)
+    the two fly every drone the same and record the same events, reachability, connectivity
+    and BS network. The relays do fly beyond r_c and out of the BS's reach: the estimate and
+    the delivery are exercised, not idle."""
+    base = Mission.build(drones=8, relays=3, rc=500.0, horizon=1000.0, **RELAY_CASES[case])
+    same = 0
+    away = cut = False
+    for k in range(RELAY_RUNS):
+        mission = base.replace(plan_seed=k)
+        fast = simulate(mission, seed=2024, run=k, trajectory=True)
+        slow = simulate_naive(mission, 2024, k, record=True,
+                              routes=prepare(mission).steering.routes)
+        flown = fast.trajectory
+        assert flown is not None
+        if not np.allclose(flown.positions, np.array(slow.positions), rtol=0.0, atol=1e-6):
+            continue
+        same += 1
+        assert (fast.t_detect, fast.t_notify) == (slow.t_detect, slow.t_notify)
+        assert fast.t_reachable() == pytest.approx(slow.t_reachable, abs=1e-9)
+        assert fast.connected_fraction() == pytest.approx(slow.connected_time / 1000.0,
+                                                          abs=1e-9)
+        assert fast.depth.tolist() == slow.depth
+        np.testing.assert_allclose(fast.farthest, slow.farthest, rtol=0.0, atol=1e-6)
+        relays = flown.mode[:, 5:] == Mode.RELAYING
+        assert relays[0].all()
+        home = np.hypot(*(flown.positions[:, 5:] - mission.area.bs_xy).transpose(2, 0, 1))
+        away |= bool((home[relays] > mission.channel.rc).any())
+        cut |= bool((relays & ~flown.bs_route[:, 5:]).any())
+    assert same >= 0.9 * RELAY_RUNS
+    assert away and cut

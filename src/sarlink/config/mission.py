@@ -101,14 +101,6 @@ class Team(Checked):
         "was last heard",
     )
 
-    @model_validator(mode="after")
-    def _searchers_left(self) -> Self:
-        if self.relays >= self.drones:
-            raise ValueError(f"team.relays = {self.relays} leaves no searcher among "
-                             f"team.drones = {self.drones}; allowed: 0 to {self.drones - 1}")
-        return self
-
-
 
 class Sensing(Checked):
     """The drones' target sensor (Eq. 2) and its imperfection (Section 4.3)."""
@@ -423,6 +415,16 @@ class Mission(Checked):
     def steps(self, seconds: float) -> int:
         """A duration in whole time increments (durations are validated as multiples of dt)."""
         return max(1, round(seconds / self.timing.dt))
+
+    @model_validator(mode="after")
+    def _searchers_left(self) -> Self:
+        """At least one drone searches (here, not in :class:`Team`, so that the line names
+        ``team.relays`` once: a team's own check would be prefixed ``team:``)."""
+        t = self.team
+        if t.relays >= t.drones:
+            raise ValueError(f"team.relays = {t.relays} leaves no searcher among team.drones "
+                             f"= {t.drones}; allowed: 0 to {t.drones - 1}")
+        return self
 
     @model_validator(mode="after")
     def _disc_has_no_fades(self) -> Self:

@@ -22,7 +22,7 @@ from sarlink.engine.codes import Estimate
 from sarlink.engine.graph import has
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import LANDED, RELAYING, REPORTING, RETURNING, Params
-from sarlink.engine.relays.placement import dist, plan
+from sarlink.engine.relays.placement import dist, into_area, plan
 
 HEARD = int(Estimate.HEARD)
 
@@ -47,9 +47,10 @@ def _hear(k: int, obs: Observation, heard: np.ndarray, n: int) -> None:
 
 
 @njit(cache=True, error_model="numpy")
-def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int
+def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int, edges: np.ndarray
            ) -> tuple[float, float]:
-    """Where the BS believes drone ``i`` at step ``k`` by dead reckoning (module docstring)."""
+    """Where the BS believes drone ``i`` at step ``k`` by dead reckoning (module docstring);
+    ``edges``: the area (:func:`~sarlink.engine.relays.placement.into_area`)."""
     x, y = heard[0, i], heard[1, i]
     travel = p.speed * p.dt * (k - heard[4, i])
     if travel <= 0.0:
@@ -69,8 +70,7 @@ def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int
         if d <= travel:
             return p.bs_x, p.bs_y
         return x + travel * (p.bs_x - x) / d, y + travel * (p.bs_y - y) / d
-    x, y = x + travel * heard[2, i], y + travel * heard[3, i]
-    return min(max(x, 0.0), p.size), min(max(y, 0.0), p.size)
+    return into_area(x + travel * heard[2, i], y + travel * heard[3, i], p.size, edges)
 
 
 @njit(cache=True, error_model="numpy")
@@ -102,7 +102,7 @@ def place(k: int, p: Params, obs: Observation, ws: np.ndarray, edges: np.ndarray
             if p.relay_estimate == HEARD:
                 tx[s], ty[s] = ws[0, i], ws[1, i]
             else:
-                tx[s], ty[s] = reckon(k, p, obs, ws, i)
+                tx[s], ty[s] = reckon(k, p, obs, ws, i, edges)
     px, py, _, _, _ = plan(tx, ty, 0, obs.rc, rx, ry, p.relay_priority, p.size, edges)
     for j in range(relays):
         gx[who[j]], gy[who[j]] = px[j], py[j]
