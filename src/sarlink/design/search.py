@@ -4,18 +4,21 @@ Two phases, both spending runs in rounds (one pool of workers per round; every c
 round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`).
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
-   (1, 2, 4, ..., the largest); once a size meets the requirement, or the ladder is decided,
+   (1, 2, 4, ..., the largest; from the smallest team the variant can fly: one searcher
+   beside its fixed relays); once a size meets the requirement, or the ladder is decided,
    every smaller size is opened. A size meets when one of its settings does; it fails when all
    do. Sizes above the smallest that meets are never run again. The ladder only orders the
    work: the answer does not assume that ``P_s`` grows with the team.
-2. **Best setting.** At the smallest team of a tunable planner, its settings race: all grow
+2. **Best setting.** At the smallest team of a tunable variant, its settings race: all grow
    together, a setting shown worse than the current best (exact McNemar test on the common
    runs) drops out, and the race ends when one is left or the rest are shown within ``margin``
    of the best. A continuous setting is then refined: the two midpoints beside the best join
    the race, halving the spacing down to ``alpha_tol``.
 
 Error control (Bonferroni, each a union bound): with ``K`` looks and ``G`` settings that can
-ever be tried at a team size, "meets" is judged at error ``δ/(K·G)`` per setting and look,
+ever be tried at a team size (ConCov's alpha grid and its refinements; ``N_r`` values for
+mTSP-ConB, one per searcher; ``N`` relay counts 0..N-1 for a team of ``N`` whose split is
+tuned), "meets" is judged at error ``δ/(K·G)`` per setting and look,
 "fails" at ``δ/K``, and eliminations at ``δ/(K·(G−1))``, where ``δ`` is the one-sided error of
 the requested confidence (0.025 at 95 %). So each team size of each planner is misjudged with
 probability at most ``δ``, and at the tuned size the best setting is dropped with probability
@@ -75,11 +78,12 @@ def _value(arm: _Arm) -> float | int:
     return value
 
 
-def _ladder(largest: int) -> list[int]:
-    sizes = [1]
-    while sizes[-1] * 2 < largest:
-        sizes.append(sizes[-1] * 2)
-    return sorted({*sizes, largest})
+def _ladder(sizes: range) -> list[int]:
+    """The probes of ``sizes``: its first, doubling, and its last."""
+    probes = [sizes[0]]
+    while probes[-1] * 2 < sizes[-1]:
+        probes.append(probes[-1] * 2)
+    return sorted({*probes, sizes[-1]})
 
 
 @dataclass
@@ -115,16 +119,15 @@ class _Search:
 
     def settings(self, variant: PlannerVariant, drones: int) -> int:
         """How many settings can ever be tried at this size (the Bonferroni divisor)."""
-        setting = variant.setting
-        r = self.request
-        return 1 if setting is None else setting.size(drones, r.alpha_step, r.alpha_tol)
+        return _settings(self.request, variant, drones)
 
     def cell(self, variant: PlannerVariant, drones: int) -> _Cell:
         cells = self.cells[variant]
         if drones not in cells:
             setting = variant.setting
+            span = variant.span(drones, self.base)
             values: Sequence[float | int | None] = (
-                [None] if setting is None else setting.grid(drones, self.request.alpha_step))
+                [None] if setting is None else setting.grid(span, self.request.alpha_step))
             arms = [self.arm(Candidate(variant, drones, v)) for v in values]
             error = self.request.error / self.looks
             cells[drones] = _Cell(drones, arms, error / self.settings(variant, drones), error)
@@ -166,10 +169,10 @@ class _Search:
 
     def active(self, variant: PlannerVariant) -> list[_Cell]:
         """The open cells of ``variant`` worth runs now (see the module docstring)."""
-        largest = self.request.max_drones
+        team = self.request.sizes(variant)
         smallest = self.smallest(variant)
-        below = range(1, largest + 1 if smallest is None else smallest)
-        probes = [n for n in _ladder(largest) if n in below]
+        below = team if smallest is None else range(team.start, smallest)
+        probes = [n for n in _ladder(team) if n in below]
         ladder_done = all(self.cell(variant, n).verdict is not Decision.OPEN for n in probes)
         sizes = below if smallest is not None or ladder_done else probes
         return [c for n in sizes if (c := self.cell(variant, n)).verdict is Decision.OPEN]
@@ -264,16 +267,19 @@ class _Search:
     # -- the answer ---------------------------------------------------------------------------
 
     def estimate(self, arm: _Arm) -> CandidateEstimate:
-        return CandidateEstimate.of(arm.candidate, self.tally(arm), arm.verdict)
+        return CandidateEstimate.of(arm.mission, arm.candidate.value, self.tally(arm),
+                                    arm.verdict)
 
     def answer(self, variant: PlannerVariant, tuning: Tuning | None) -> PlannerAnswer:
         cells = self.cells[variant]
         smallest = self.smallest(variant)
-        sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)), len(c.arms))
-                      for n, c in sorted(cells.items())
-                      if any(self.tally(a).runs for a in c.arms))
-        limit = self.request.max_drones + 1 if smallest is None else smallest
-        undecided = tuple(n for n in range(1, limit)
+        team_sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)),
+                                    len(c.arms))
+                           for n, c in sorted(cells.items())
+                           if any(self.tally(a).runs for a in c.arms))
+        sizes = self.request.sizes(variant)
+        limit = sizes.stop if smallest is None else smallest
+        undecided = tuple(n for n in range(sizes.start, limit)
                           if n not in cells or cells[n].verdict is not Decision.FAILS)
         chosen = None
         if smallest is not None:
@@ -282,8 +288,10 @@ class _Search:
             status = "reached"
         else:
             status = "undecided" if undecided else "not reachable"
+        held = variant.own if variant.split else None
         return PlannerAnswer(variant.planner, variant.label, dict(variant.fixed), status,
-                             smallest, chosen, undecided, sizes, tuning)
+                             smallest, chosen, undecided, team_sizes, tuning,
+                             {} if held is None else {held.name: self.base.params()[held.name]})
 
     def most_successful(self, cell: _Cell) -> _Arm:
         """The arm of ``cell`` with the highest ``P_s`` estimate, each on all its own runs."""
@@ -291,14 +299,25 @@ class _Search:
                    key=lambda a: self.tally(a).p)
 
 
+def _settings(request: DesignRequest, variant: PlannerVariant, drones: int) -> int:
+    """How many settings of ``variant`` can ever be tried at ``drones`` (the Bonferroni
+    divisor ``G``)."""
+    setting = variant.setting
+    if setting is None:
+        return 1
+    span = variant.span(drones, request.mission)
+    return setting.size(span, request.alpha_step, request.alpha_tol)
+
+
 def _grid_points(request: DesignRequest) -> int:
     """Candidates of a full grid at the finest setting spacing the design can reach."""
     finest = request.alpha_step / 2 ** refinements(request.alpha_step, request.alpha_tol)
     total = 0
     for variant in request.variants():
-        for drones in range(1, request.max_drones + 1):
+        for drones in request.sizes(variant):
             setting = variant.setting
-            total += 1 if setting is None else len(setting.grid(drones, finest))
+            span = variant.span(drones, request.mission)
+            total += 1 if setting is None else len(setting.grid(span, finest))
     return total
 
 
