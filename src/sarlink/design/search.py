@@ -37,7 +37,7 @@ from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.sequential import Decision, Schedule, decide, not_worse_by, worse
 
-__all__ = ["search"]
+__all__ = ["Errors", "errors", "search"]
 
 Progress = Callable[[int, int, int], None]
 """Called after each round with (candidates decided, candidates opened, runs used)."""
@@ -52,14 +52,38 @@ class _Arm:
     verdict: Decision = Decision.OPEN
 
 
+@dataclass(frozen=True)
+class Errors:
+    """The errors the decisions at one team size of one variant are judged at, per look."""
+
+    settings: int
+    """``G``: the settings that can ever be tried at this size."""
+    meets: float
+    """``δ/(K·G)``: a setting judged to meet the requirement."""
+    fails: float
+    """``δ/K``: a setting judged to fail it."""
+    drops: float
+    """``δ/(K·(G−1))``: a setting dropped from the race as worse than the best."""
+
+
+def errors(request: DesignRequest, variant: PlannerVariant, drones: int) -> Errors:
+    """The Bonferroni shares of the module docstring at team size ``drones``: ``G`` is 1
+    without a setting, ConCov's alpha grid with its refinements, mTSP-ConB's ``N_r`` values
+    (one per searcher), or the team's ``N`` relay counts when the split is tuned."""
+    setting = variant.setting
+    count = 1 if setting is None else setting.size(
+        variant.span(drones, request.mission), request.alpha_step, request.alpha_tol)
+    per_look = request.error / len(request.schedule().looks)
+    return Errors(count, per_look / count, per_look, per_look / max(count - 1, 1))
+
+
 @dataclass
 class _Cell:
     """One team size of one variant: its settings' arms and the errors they are judged at."""
 
     drones: int
     arms: list[_Arm]
-    meets_error: float
-    fails_error: float
+    errors: Errors
 
     @property
     def verdict(self) -> Decision:
@@ -103,10 +127,6 @@ class _Search:
 
     # -- bookkeeping --------------------------------------------------------------------------
 
-    @property
-    def looks(self) -> int:
-        return len(self.schedule.looks)
-
     def tally(self, arm: _Arm) -> Tally:
         return self.runs.tally(arm.mission)
 
@@ -117,10 +137,6 @@ class _Search:
     def used(self) -> int:
         return sum(self.tally(arm).runs for arm in self.arms())
 
-    def settings(self, variant: PlannerVariant, drones: int) -> int:
-        """How many settings can ever be tried at this size (the Bonferroni divisor)."""
-        return _settings(self.request, variant, drones)
-
     def cell(self, variant: PlannerVariant, drones: int) -> _Cell:
         cells = self.cells[variant]
         if drones not in cells:
@@ -129,8 +145,7 @@ class _Search:
             values: Sequence[float | int | None] = (
                 [None] if setting is None else setting.grid(span, self.request.alpha_step))
             arms = [self.arm(Candidate(variant, drones, v)) for v in values]
-            error = self.request.error / self.looks
-            cells[drones] = _Cell(drones, arms, error / self.settings(variant, drones), error)
+            cells[drones] = _Cell(drones, arms, errors(self.request, variant, drones))
         return cells[drones]
 
     def arm(self, candidate: Candidate) -> _Arm:
@@ -158,7 +173,7 @@ class _Search:
     def judge(self, arm: _Arm, cell: _Cell) -> None:
         tally = self.tally(arm)
         arm.verdict = decide(tally.successes, tally.runs, self.request.ps,
-                              meets_error=cell.meets_error, fails_error=cell.fails_error,
+                              meets_error=cell.errors.meets, fails_error=cell.errors.fails,
                               final=self.schedule.after(tally.runs) is None)
 
     # -- phase 1: the smallest team -----------------------------------------------------------
@@ -201,8 +216,7 @@ class _Search:
     def tune(self, variant: PlannerVariant, cell: _Cell) -> Tuning:
         setting = variant.setting
         assert setting is not None
-        size = self.settings(variant, cell.drones)
-        error = self.request.error / (self.looks * max(size - 1, 1))
+        error = cell.errors.drops
         step = self.request.alpha_step
         halvings = refinements(step, self.request.alpha_tol) if setting.continuous else 0
         # a setting judged to fail cannot be the best of a size that meets
@@ -297,16 +311,6 @@ class _Search:
         """The arm of ``cell`` with the highest ``P_s`` estimate, each on all its own runs."""
         return max((a for a in cell.arms if self.tally(a).runs),
                    key=lambda a: self.tally(a).p)
-
-
-def _settings(request: DesignRequest, variant: PlannerVariant, drones: int) -> int:
-    """How many settings of ``variant`` can ever be tried at ``drones`` (the Bonferroni
-    divisor ``G``)."""
-    setting = variant.setting
-    if setting is None:
-        return 1
-    span = variant.span(drones, request.mission)
-    return setting.size(span, request.alpha_step, request.alpha_tol)
 
 
 def _grid_points(request: DesignRequest) -> int:
