@@ -80,9 +80,11 @@ def _print(answer: DesignAnswer) -> None:
     r = answer.request
     m = r.mission
     area = area_label(m.region, m.area.size)
+    teams = (f"up to {r.max_drones}" if r.min_drones == 1 else f"{r.min_drones}"
+             if r.min_drones == r.max_drones else f"{r.min_drones} to {r.max_drones}")
     table = Table(title=f"Smallest team with P_s({r.td:g} s) >= {r.ps:g} at {r.confidence:.0%} "
-                        f"confidence (r_c = {m.channel.rc:g} m, {area}, "
-                        f"up to {r.max_drones} drones)", title_justify="left")
+                        f"confidence (r_c = {m.channel.rc:g} m, {area}, {teams} drones)",
+                  title_justify="left")
     # the split of each team, when the design tunes it or a team has relays
     splits = r.split or any(p.chosen is not None and p.chosen.relays for p in answer.planners)
     columns = ("planner", "smallest team", *("searchers + relays",) * splits,
@@ -255,6 +257,9 @@ def design(
             if split:
                 raise ConfigError("--split needs --rc: relays fly differently at each range, "
                                   "so the range design cannot tune the split")
+            if min_drones != 1:
+                raise ConfigError("--min-drones applies with --rc only: without it --sizes "
+                                  "names the team sizes")
             _design_range(flags, td, ps, planner, option, max_drones, confidence, seed, out,
                           workers, scheduler, dask_local, json, sizes, range_runs)
             return

@@ -4,11 +4,11 @@ Two phases, both spending runs in rounds (one pool of workers per round; every c
 round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`).
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
-   (1, 2, 4, ..., the largest; from the smallest team the variant can fly: one searcher
-   beside its fixed relays); once a size meets the requirement, or the ladder is decided,
-   every smaller size is opened. A size meets when one of its settings does; it fails when all
-   do. Sizes above the smallest that meets are never run again. The ladder only orders the
-   work: the answer does not assume that ``P_s`` grows with the team.
+   from the smallest considered (1, 2, 4, ..., the largest; a variant with ``k`` fixed relays
+   starts at ``k + 1``, one searcher beside them); once a size meets the requirement, or the
+   ladder is decided, every smaller size is opened. A size meets when one of its settings
+   does; it fails when all do. Sizes above the smallest that meets are never run again. The
+   ladder only orders the work: the answer does not assume that ``P_s`` grows with the team.
 2. **Best setting.** At the smallest team of a tunable variant, its settings race: all grow
    together, a setting shown worse than the current best (exact McNemar test on the common
    runs) drops out, and the race ends when one is left or the rest are shown within ``margin``
