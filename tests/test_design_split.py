@@ -221,6 +221,9 @@ def test_a_configured_relay_count_flies_from_the_cli(tmp_path: Path) -> None:
      "--split: tunes the relay count, which options fix (relays = 1)"),
     (["--rc", "500", "--split", "--max-drones", "1"], "--split: a team of one drone"),
     (["--split"], "--split needs --rc"),
+    (["--min-drones", "2"], "--min-drones applies with --rc only"),
+    (["--rc", "500", "--min-drones", "5", "--max-drones", "4"],
+     "--min-drones: 5 exceeds max_drones (4)"),
 ])
 def test_cli_split_errors_are_one_line(tmp_path: Path, args: list[str], message: str) -> None:
     result = CliRunner().invoke(app, ["design", "--td", "600", "--ps", "0.9", *args,
