@@ -62,6 +62,11 @@ def _minutes(seconds: float) -> str:
     return "–" if math.isnan(seconds) else f"{seconds:.0f} s"
 
 
+def _split(e: CandidateEstimate) -> str:
+    """A team's split in words: its searchers and its relays."""
+    return f"{e.searchers} searching, {e.relays} relay{'' if e.relays == 1 else 's'}"
+
+
 def _setting(planner: PlannerAnswer) -> str:
     if planner.tuning is None or planner.chosen is None:
         return "–"
@@ -75,33 +80,47 @@ def _print(answer: DesignAnswer) -> None:
     r = answer.request
     m = r.mission
     area = area_label(m.region, m.area.size)
+    teams = (f"up to {r.max_drones}" if r.min_drones == 1 else f"{r.min_drones}"
+             if r.min_drones == r.max_drones else f"{r.min_drones} to {r.max_drones}")
     table = Table(title=f"Smallest team with P_s({r.td:g} s) >= {r.ps:g} at {r.confidence:.0%} "
-                        f"confidence (r_c = {m.channel.rc:g} m, {area}, "
-                        f"up to {r.max_drones} drones)", title_justify="left")
-    for name in ("planner", "smallest team", "P_s [95% Wilson]", "runs", "setting",
-                 "mission time"):
+                        f"confidence (r_c = {m.channel.rc:g} m, {area}, {teams} drones)",
+                  title_justify="left")
+    # the split of each team, when the design tunes it or a team has relays
+    splits = r.split or any(p.chosen is not None and p.chosen.relays for p in answer.planners)
+    columns = ("planner", "smallest team", *("searchers + relays",) * splits,
+               "P_s [95% Wilson]", "runs",
+               "setting", "mission time")
+    for name in columns:
         table.add_column(name, justify="left" if name in ("planner", "setting") else "right")
     for p in answer.planners:
         if p.chosen is None:
             why = ("not reachable within the largest team" if p.status == "not reachable"
                    else f"undecided: team sizes {_sizes(p.undecided)} too close to tell")
-            table.add_row(p.label, f"[dim]{why}[/]", "", "", "", "")
+            table.add_row(p.label, f"[dim]{why}[/]", *[""] * (len(columns) - 2))
             continue
         note = f" ({_sizes(p.undecided)} undecided)" if p.undecided else ""
-        table.add_row(p.label, f"{p.smallest}{note}", _probability(p.chosen),
-                      f"{p.chosen.runs:,}", _setting(p), _minutes(p.chosen.mission_time))
+        split = f"{p.chosen.searchers} + {p.chosen.relays}"
+        table.add_row(p.label, f"{p.smallest}{note}", *(split,) * splits,
+                      _probability(p.chosen), f"{p.chosen.runs:,}", _setting(p),
+                      _minutes(p.chosen.mission_time))
     console.print(table)
     for p in answer.planners:
         if p.tuning is not None:
             _print_tuning(p)
+    held = [f"{p.label}: {k} = {v:g}" for p in answer.planners for k, v in p.held.items()]
+    if held:
+        console.print(f"Held at the mission's value while the split is tuned: "
+                      f"{'; '.join(held)} (--option fixes another).", highlight=False)
     best = answer.recommendation
     if best is None or best.chosen is None:
         console.print(f"[bold]No planner reaches P_s >= {r.ps:g} within {r.max_drones} "
                       "drones.[/]")
     else:
-        setting = "" if best.tuning is None else f", {_setting(best)}"
+        setting = "" if best.tuning is None or r.split else f", {_setting(best)}"
+        split = f" ({_split(best.chosen)})" if splits else ""
         console.print(f"[bold]Recommendation: {best.label} with {best.chosen.drones} drones"
-                      f"{setting}[/]: P_s = {_probability(best.chosen)} from "
+                      f"{split}{setting}[/]: "
+                      f"P_s = {_probability(best.chosen)} from "
                       f"{best.chosen.runs:,} runs, mean mission time "
                       f"{_minutes(best.chosen.mission_time)}.", highlight=False)
     ended = ("the statistics" if answer.ended_by == "statistics"
@@ -196,6 +215,11 @@ def design(
         help="NAME=V1,V2: also try every planner with each value of a mission parameter; "
              "repeat for several; default: on_detect=continue,report")] = None,
     max_drones: Annotated[int, typer.Option(help="largest team considered")] = 22,
+    min_drones: Annotated[int, typer.Option(
+        help="smallest team considered; equal to --max-drones: that team alone")] = 1,
+    split: Annotated[bool, typer.Option(
+        "--split", help="tune the split: at every team size, every relay count from 0 to all "
+                        "but one drone (each planner's own setting held)")] = False,
     confidence: Annotated[float, typer.Option(help="confidence of every decision")] = 0.95,
     max_runs: Annotated[int, typer.Option(help="budget: runs the whole design may use")
                         ] = 400_000,
@@ -230,13 +254,20 @@ def design(
 
     with user_errors():
         if _range_free_request(flags):
+            if split:
+                raise ConfigError("--split needs --rc: relays fly differently at each range, "
+                                  "so the range design cannot tune the split")
+            if min_drones != 1:
+                raise ConfigError("--min-drones applies with --rc only: without it --sizes "
+                                  "names the team sizes")
             _design_range(flags, td, ps, planner, option, max_drones, confidence, seed, out,
                           workers, scheduler, dask_local, json, sizes, range_runs)
             return
         mission = flags.mission()
         fields: dict[str, Any] = {
             "mission": mission, "td": td, "ps": ps,
-            "max_drones": max_drones, "confidence": confidence, "max_runs": max_runs,
+            "max_drones": max_drones, "min_drones": min_drones, "split": split,
+            "confidence": confidence, "max_runs": max_runs,
             "candidate_runs": candidate_runs, "first_runs": first_runs, "margin": margin,
             "alpha_step": alpha_step, "alpha_tol": alpha_tol, "seed": seed,
         }
@@ -283,7 +314,11 @@ def _design_range(flags: MissionFlags, td: float, ps: float, planner: list[str] 
     if range_runs < 10:
         raise ConfigError(f"--range-runs must be at least 10, got {range_runs}")
     team = _team_sizes(sizes, max_drones)
-    fields: dict[str, Any] = {"mission": flags.mission(), "td": td, "ps": ps,
+    mission = flags.mission()
+    if mission.team.relays:
+        raise ConfigError(f"team.relays = {mission.team.relays} needs --rc: relays fly "
+                          "differently at each range, so the range design cannot take them")
+    fields: dict[str, Any] = {"mission": mission, "td": td, "ps": ps,
                               "max_drones": max_drones, "confidence": confidence, "seed": seed,
                               "options": {}}
     if planner is not None:

@@ -6,7 +6,7 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from sarlink.design.candidates import Candidate
+from sarlink.config import Mission
 from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Tally
 from sarlink.design.sequential import Decision
@@ -23,8 +23,10 @@ class CandidateEstimate:
     the sequential test's decision."""
 
     drones: int
+    relays: int
+    """Relays among the ``drones``; the others search."""
     value: float | int | None
-    """The planner's setting (``alpha``, ``nr``), or None."""
+    """The setting tuned (``alpha``, ``nr``, ``relays``), or None."""
     runs: int
     successes: int
     p: float
@@ -35,11 +37,18 @@ class CandidateEstimate:
     verdict: Decision
 
     @classmethod
-    def of(cls, candidate: Candidate, tally: Tally, verdict: Decision) -> CandidateEstimate:
-        """The estimate of ``candidate`` from its runs' ``tally``, with its Wilson interval."""
+    def of(cls, mission: Mission, value: float | int | None, tally: Tally,
+           verdict: Decision) -> CandidateEstimate:
+        """The estimate of the candidate flying ``mission`` (its setting at ``value``) from
+        its runs' ``tally``, with its Wilson interval."""
         lo, hi = tally.interval()
-        return cls(candidate.drones, candidate.value, tally.runs, tally.successes, tally.p, lo,
-                   hi, tally.mission_time, verdict)
+        return cls(mission.team.drones, mission.team.relays, value, tally.runs,
+                   tally.successes, tally.p, lo, hi, tally.mission_time, verdict)
+
+    @property
+    def searchers(self) -> int:
+        """The drones that search: all but the relays."""
+        return self.drones - self.relays
 
 
 @dataclass(frozen=True)
@@ -71,7 +80,8 @@ class Tuning:
 
 @dataclass(frozen=True)
 class PlannerAnswer:
-    """One planner variant: its smallest team meeting the requirement, and its setting there."""
+    """One planner variant: its smallest team meeting the requirement, and its setting there
+    (with the split tuned: the relay count, ``chosen.relays``)."""
 
     planner: str
     label: str
@@ -86,6 +96,9 @@ class PlannerAnswer:
     """Smaller team sizes that stayed borderline or open: the true smallest may be one."""
     team_sizes: tuple[TeamSize, ...]
     tuning: Tuning | None
+    held: dict[str, Any]
+    """With the split tuned, the planner's own setting held at the base mission's value
+    (``{"alpha": 0.5}``); empty otherwise."""
 
 
 @dataclass(frozen=True)

@@ -41,6 +41,11 @@ class DesignRequest(Checked):
         "with each combination; default: with and without drones that report "
         "(on_detect = continue, report)")
     max_drones: int = Field(22, ge=1, le=1000, description="largest team considered")
+    min_drones: int = Field(1, ge=1, le=1000, description="smallest team considered; equal to "
+                            "max_drones: that team alone (with split: its best split)")
+    split: bool = Field(False, description="tune the team's split: at every team size, every "
+                        "relay count from 0 to all but one drone (team.relays), each planner's "
+                        "own setting held at the mission's value")
     confidence: float = Field(0.95, gt=0.5, lt=1,
                               description="two-sided confidence of the interval on P_s")
     first_runs: int = Field(50, ge=10, description="runs of a candidate at its first look")
@@ -97,14 +102,31 @@ class DesignRequest(Checked):
         if self.first_runs > self.candidate_runs:
             raise ValueError(f"first_runs: {self.first_runs} exceeds candidate_runs "
                              f"({self.candidate_runs})")
+        if self.min_drones > self.max_drones:
+            raise ValueError(f"min_drones: {self.min_drones} exceeds max_drones "
+                             f"({self.max_drones})")
+        if self.split and "relays" in self.options:
+            raise ValueError("split: tunes the relay count, which options fix (relays = "
+                             f"{', '.join(map(str, self.options['relays']))}): give one or "
+                             "the other")
+        if self.split and self.max_drones < 2:
+            raise ValueError("split: a team of one drone has no split (its drone searches); "
+                             "allowed with max_drones of 2 or more")
         try:
             self.base()
         except ConfigError as exc:
             raise ValueError(f"td: {self.td:g} s does not fit the mission: {exc}") from None
         for variant in self.variants():  # every combination must be a valid mission
-            try:
-                Candidate(variant, 1).mission(self.mission)
+            try:  # at the largest team, where the fewest values are out of range
+                Candidate(variant, self.max_drones, 0 if variant.split else None
+                          ).mission(self.mission)
             except ConfigError as exc:
+                relays = self.mission.team.relays
+                if not variant.split and "relays" not in dict(variant.fixed) and \
+                        relays >= self.max_drones:
+                    raise ValueError(f"max_drones: {self.max_drones} drones leave no searcher "
+                                     f"beside the mission's team.relays = {relays}; allowed: "
+                                     f"more than {relays}") from None
                 raise ValueError(f"options: {variant.label}: {exc}") from None
         return self
 
@@ -116,9 +138,14 @@ class DesignRequest(Checked):
     def variants(self) -> list[PlannerVariant]:
         """Every planner with every combination of the options, in request order."""
         names = list(self.options)
-        return [PlannerVariant(planner, tuple(zip(names, values, strict=True)))
+        return [PlannerVariant(planner, tuple(zip(names, values, strict=True)), self.split)
                 for planner in self.planners
                 for values in itertools.product(*self.options.values())]
+
+    def sizes(self, variant: PlannerVariant) -> range:
+        """The team sizes considered for ``variant``: ``min_drones`` to ``max_drones``, none
+        so small that its fixed relays leave no searcher."""
+        return range(max(self.min_drones, variant.fewest(self.mission)), self.max_drones + 1)
 
     def schedule(self) -> Schedule:
         """When a candidate is looked at: ``first_runs``, then doubling up to

@@ -4,18 +4,21 @@ Two phases, both spending runs in rounds (one pool of workers per round; every c
 round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`).
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
-   (1, 2, 4, ..., the largest); once a size meets the requirement, or the ladder is decided,
-   every smaller size is opened. A size meets when one of its settings does; it fails when all
-   do. Sizes above the smallest that meets are never run again. The ladder only orders the
-   work: the answer does not assume that ``P_s`` grows with the team.
-2. **Best setting.** At the smallest team of a tunable planner, its settings race: all grow
+   from the smallest considered (1, 2, 4, ..., the largest; a variant with ``k`` fixed relays
+   starts at ``k + 1``, one searcher beside them); once a size meets the requirement, or the
+   ladder is decided, every smaller size is opened. A size meets when one of its settings
+   does; it fails when all do. Sizes above the smallest that meets are never run again. The
+   ladder only orders the work: the answer does not assume that ``P_s`` grows with the team.
+2. **Best setting.** At the smallest team of a tunable variant, its settings race: all grow
    together, a setting shown worse than the current best (exact McNemar test on the common
    runs) drops out, and the race ends when one is left or the rest are shown within ``margin``
    of the best. A continuous setting is then refined: the two midpoints beside the best join
    the race, halving the spacing down to ``alpha_tol``.
 
 Error control (Bonferroni, each a union bound): with ``K`` looks and ``G`` settings that can
-ever be tried at a team size, "meets" is judged at error ``δ/(K·G)`` per setting and look,
+ever be tried at a team size (ConCov's alpha grid and its refinements; ``N_r`` values for
+mTSP-ConB, one per searcher; ``N`` relay counts 0..N-1 for a team of ``N`` whose split is
+tuned), "meets" is judged at error ``δ/(K·G)`` per setting and look,
 "fails" at ``δ/K``, and eliminations at ``δ/(K·(G−1))``, where ``δ`` is the one-sided error of
 the requested confidence (0.025 at 95 %). So each team size of each planner is misjudged with
 probability at most ``δ``, and at the tuned size the best setting is dropped with probability
@@ -34,7 +37,7 @@ from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.sequential import Decision, Schedule, decide, not_worse_by, worse
 
-__all__ = ["search"]
+__all__ = ["Errors", "errors", "search"]
 
 Progress = Callable[[int, int, int], None]
 """Called after each round with (candidates decided, candidates opened, runs used)."""
@@ -49,14 +52,38 @@ class _Arm:
     verdict: Decision = Decision.OPEN
 
 
+@dataclass(frozen=True)
+class Errors:
+    """The errors the decisions at one team size of one variant are judged at, per look."""
+
+    settings: int
+    """``G``: the settings that can ever be tried at this size."""
+    meets: float
+    """``δ/(K·G)``: a setting judged to meet the requirement."""
+    fails: float
+    """``δ/K``: a setting judged to fail it."""
+    drops: float
+    """``δ/(K·(G−1))``: a setting dropped from the race as worse than the best."""
+
+
+def errors(request: DesignRequest, variant: PlannerVariant, drones: int) -> Errors:
+    """The Bonferroni shares of the module docstring at team size ``drones``: ``G`` is 1
+    without a setting, ConCov's alpha grid with its refinements, mTSP-ConB's ``N_r`` values
+    (one per searcher), or the team's ``N`` relay counts when the split is tuned."""
+    setting = variant.setting
+    count = 1 if setting is None else setting.size(
+        variant.span(drones, request.mission), request.alpha_step, request.alpha_tol)
+    per_look = request.error / len(request.schedule().looks)
+    return Errors(count, per_look / count, per_look, per_look / max(count - 1, 1))
+
+
 @dataclass
 class _Cell:
     """One team size of one variant: its settings' arms and the errors they are judged at."""
 
     drones: int
     arms: list[_Arm]
-    meets_error: float
-    fails_error: float
+    errors: Errors
 
     @property
     def verdict(self) -> Decision:
@@ -75,11 +102,12 @@ def _value(arm: _Arm) -> float | int:
     return value
 
 
-def _ladder(largest: int) -> list[int]:
-    sizes = [1]
-    while sizes[-1] * 2 < largest:
-        sizes.append(sizes[-1] * 2)
-    return sorted({*sizes, largest})
+def _ladder(sizes: range) -> list[int]:
+    """The probes of ``sizes``: its first, doubling, and its last."""
+    probes = [sizes[0]]
+    while probes[-1] * 2 < sizes[-1]:
+        probes.append(probes[-1] * 2)
+    return sorted({*probes, sizes[-1]})
 
 
 @dataclass
@@ -99,10 +127,6 @@ class _Search:
 
     # -- bookkeeping --------------------------------------------------------------------------
 
-    @property
-    def looks(self) -> int:
-        return len(self.schedule.looks)
-
     def tally(self, arm: _Arm) -> Tally:
         return self.runs.tally(arm.mission)
 
@@ -113,21 +137,15 @@ class _Search:
     def used(self) -> int:
         return sum(self.tally(arm).runs for arm in self.arms())
 
-    def settings(self, variant: PlannerVariant, drones: int) -> int:
-        """How many settings can ever be tried at this size (the Bonferroni divisor)."""
-        setting = variant.setting
-        r = self.request
-        return 1 if setting is None else setting.size(drones, r.alpha_step, r.alpha_tol)
-
     def cell(self, variant: PlannerVariant, drones: int) -> _Cell:
         cells = self.cells[variant]
         if drones not in cells:
             setting = variant.setting
+            span = variant.span(drones, self.base)
             values: Sequence[float | int | None] = (
-                [None] if setting is None else setting.grid(drones, self.request.alpha_step))
+                [None] if setting is None else setting.grid(span, self.request.alpha_step))
             arms = [self.arm(Candidate(variant, drones, v)) for v in values]
-            error = self.request.error / self.looks
-            cells[drones] = _Cell(drones, arms, error / self.settings(variant, drones), error)
+            cells[drones] = _Cell(drones, arms, errors(self.request, variant, drones))
         return cells[drones]
 
     def arm(self, candidate: Candidate) -> _Arm:
@@ -155,7 +173,7 @@ class _Search:
     def judge(self, arm: _Arm, cell: _Cell) -> None:
         tally = self.tally(arm)
         arm.verdict = decide(tally.successes, tally.runs, self.request.ps,
-                              meets_error=cell.meets_error, fails_error=cell.fails_error,
+                              meets_error=cell.errors.meets, fails_error=cell.errors.fails,
                               final=self.schedule.after(tally.runs) is None)
 
     # -- phase 1: the smallest team -----------------------------------------------------------
@@ -166,10 +184,10 @@ class _Search:
 
     def active(self, variant: PlannerVariant) -> list[_Cell]:
         """The open cells of ``variant`` worth runs now (see the module docstring)."""
-        largest = self.request.max_drones
+        team = self.request.sizes(variant)
         smallest = self.smallest(variant)
-        below = range(1, largest + 1 if smallest is None else smallest)
-        probes = [n for n in _ladder(largest) if n in below]
+        below = team if smallest is None else range(team.start, smallest)
+        probes = [n for n in _ladder(team) if n in below]
         ladder_done = all(self.cell(variant, n).verdict is not Decision.OPEN for n in probes)
         sizes = below if smallest is not None or ladder_done else probes
         return [c for n in sizes if (c := self.cell(variant, n)).verdict is Decision.OPEN]
@@ -198,8 +216,7 @@ class _Search:
     def tune(self, variant: PlannerVariant, cell: _Cell) -> Tuning:
         setting = variant.setting
         assert setting is not None
-        size = self.settings(variant, cell.drones)
-        error = self.request.error / (self.looks * max(size - 1, 1))
+        error = cell.errors.drops
         step = self.request.alpha_step
         halvings = refinements(step, self.request.alpha_tol) if setting.continuous else 0
         # a setting judged to fail cannot be the best of a size that meets
@@ -264,16 +281,19 @@ class _Search:
     # -- the answer ---------------------------------------------------------------------------
 
     def estimate(self, arm: _Arm) -> CandidateEstimate:
-        return CandidateEstimate.of(arm.candidate, self.tally(arm), arm.verdict)
+        return CandidateEstimate.of(arm.mission, arm.candidate.value, self.tally(arm),
+                                    arm.verdict)
 
     def answer(self, variant: PlannerVariant, tuning: Tuning | None) -> PlannerAnswer:
         cells = self.cells[variant]
         smallest = self.smallest(variant)
-        sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)), len(c.arms))
-                      for n, c in sorted(cells.items())
-                      if any(self.tally(a).runs for a in c.arms))
-        limit = self.request.max_drones + 1 if smallest is None else smallest
-        undecided = tuple(n for n in range(1, limit)
+        team_sizes = tuple(TeamSize(n, c.verdict, self.estimate(self.most_successful(c)),
+                                    len(c.arms))
+                           for n, c in sorted(cells.items())
+                           if any(self.tally(a).runs for a in c.arms))
+        sizes = self.request.sizes(variant)
+        limit = sizes.stop if smallest is None else smallest
+        undecided = tuple(n for n in range(sizes.start, limit)
                           if n not in cells or cells[n].verdict is not Decision.FAILS)
         chosen = None
         if smallest is not None:
@@ -282,8 +302,10 @@ class _Search:
             status = "reached"
         else:
             status = "undecided" if undecided else "not reachable"
+        held = variant.own if variant.split else None
         return PlannerAnswer(variant.planner, variant.label, dict(variant.fixed), status,
-                             smallest, chosen, undecided, sizes, tuning)
+                             smallest, chosen, undecided, team_sizes, tuning,
+                             {} if held is None else {held.name: self.base.params()[held.name]})
 
     def most_successful(self, cell: _Cell) -> _Arm:
         """The arm of ``cell`` with the highest ``P_s`` estimate, each on all its own runs."""
@@ -296,9 +318,10 @@ def _grid_points(request: DesignRequest) -> int:
     finest = request.alpha_step / 2 ** refinements(request.alpha_step, request.alpha_tol)
     total = 0
     for variant in request.variants():
-        for drones in range(1, request.max_drones + 1):
+        for drones in request.sizes(variant):
             setting = variant.setting
-            total += 1 if setting is None else len(setting.grid(drones, finest))
+            span = variant.span(drones, request.mission)
+            total += 1 if setting is None else len(setting.grid(span, finest))
     return total
 
 
