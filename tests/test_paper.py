@@ -34,6 +34,7 @@ from sarlink.paper.experiments import (
     EXPERIMENTS,
     PLAN_TIME_PLANNERS,
     RANGES,
+    RELAY_PLANNER,
     TD_LONG,
     mtsp_plans,
     plan_time_missions,
@@ -63,19 +64,20 @@ def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     out = quick.out
-    for n in range(1, 11):  # the paper's seven, Figs. 8-10 beyond the paper
+    for n in range(1, 12):  # the paper's seven, Figs. 8-11 beyond the paper
         for ext in ("png", "svg"):
             path = out / "figures" / f"fig{n}.{ext}"
             assert path.stat().st_size > 10_000, path
-    assert sorted(quick.figures) == list(range(1, 11))
+    assert sorted(quick.figures) == list(range(1, 12))
     assert quick.report_md == out / "report.md"
     page = quick.report_html.read_text()
-    assert page.count("data:image/png;base64,") == 10
+    assert page.count("data:image/png;base64,") == 11
     assert "Beyond the paper: drones that go and tell" in page
     assert "Beyond the paper: the search patterns SAR teams fly" in page
+    assert "Beyond the paper: how many drones should hold the link?" in page
     assert not re.search(r"""(src|href)=["']?(https?:|//|figures/)""", page)  # self-contained
     for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve",
-                 "others", "range_curve"):
+                 "others", "range_curve", "relays"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
 
@@ -409,6 +411,8 @@ def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the
         if exp.name == "others":
             assert flown == others
             assert experiment.grid["on_detect"] == ["continue", "report"]
+        elif exp.name == "relays":
+            assert flown == {RELAY_PLANNER}
         else:
             assert flown == set(PAPER_PLANNERS)
 
@@ -423,10 +427,10 @@ def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the
     assert (values["planner"] == "MadeUp").sum() == len(DRONES) * len(RANGES)
 
 
-@pytest.mark.parametrize("name", ["report", "others"])
+@pytest.mark.parametrize("name", ["report", "others", "relays"])
 def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose_nothing(
         name: str, tmp_path: Path) -> None:
-    """Figs. 8 and 9 read only measures settled at notification from these sweeps: their
+    """Figs. 8, 9 and 11 read only measures settled at notification from these sweeps: their
     tables from runs stopped there equal those from runs flown to the horizon, but for the
     reachability, connected fraction and BS's network, which runs stopped before ``t_d`` do
     not have (NaN: never a wrong value)."""
@@ -438,14 +442,15 @@ def test_the_sweeps_beyond_the_paper_stop_at_notification_and_their_figures_lose
         [(Experiment(name=name, seed=built.seed, runs=6,
                      mission=built.mission.replace(stop=stop), grid=grid), tmp_path / stop)
          for stop in ("notified", "horizon")], workers=1, progress=False)]
-    lost = [c for c in tables[0][name]
-            if c.startswith(("reachability", "connected", "depth", "farthest"))]
+    records = ("reach", "connected", "depth", "farthest")  # per run too: reach@1000, ...
+    lost = [c for c in tables[0][name] if c.startswith(records)]
     kept = tables[0][name][lost].notna()
     assert lost and not kept.all().all() and tables[1][name][lost].notna().all().all()
     pd.testing.assert_frame_equal(tables[0][name][lost][kept], tables[1][name][lost][kept])
     for table in tables[0]:
-        pd.testing.assert_frame_equal(tables[0][table].drop(columns=lost, errors="ignore"),
-                                      tables[1][table].drop(columns=lost, errors="ignore"))
+        gone = [c for c in tables[0][table] if c.startswith(records)]
+        pd.testing.assert_frame_equal(tables[0][table].drop(columns=gone),
+                                      tables[1][table].drop(columns=gone))
     stopped = tables[0][name]
     assert (stopped["P_s"] < 1).any() and (stopped["P_s"] > 0).any()  # both kinds of run
 

@@ -22,6 +22,7 @@ paper's without edits here.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -34,7 +35,7 @@ from sarlink.config import Experiment, Mission
 from sarlink.engine.streams import plan_seed
 from sarlink.metrics import run_values, success_curve, summarize
 from sarlink.mtsp import plan_for
-from sarlink.planners import PAPER_PLANNERS, planner_names
+from sarlink.planners import PAPER_PLANNERS, get_planner, planner_names
 
 __all__ = [
     "BEYOND",
@@ -53,6 +54,11 @@ __all__ = [
     "RANGE_DRONES",
     "RANGE_FIG",
     "RANGE_TDS",
+    "RELAY_COUNTS",
+    "RELAY_DRONES",
+    "RELAY_FIG",
+    "RELAY_PLANNER",
+    "RELAY_TDS",
     "RUNS",
     "SEED",
     "SIGMA",
@@ -63,6 +69,7 @@ __all__ = [
     "mtsp_plans",
     "other_planners",
     "plan_time_missions",
+    "relay_label",
 ]
 
 SEED = 2024
@@ -121,6 +128,15 @@ class PaperExperiment:
     """The experiment with the given runs per grid point."""
     tables: Callable[[pd.DataFrame], dict[str, pd.DataFrame]]
     """Summary tables, by name, from the experiment's runs."""
+    quick_share: float = 1.0
+    """The share of the reproduction's runs per grid point it flies under ``--quick``: below 1
+    for a sweep whose runs cost many times the others', so that the quick reproduction stays
+    quick; every full reproduction flies them all."""
+
+    def runs(self, runs: int, quick: bool) -> int:
+        """Its runs per grid point in a reproduction of ``runs`` per point: runs ``0 ..
+        n-1``, the first of every other sweep's (the same targets), at least one."""
+        return max(1, math.ceil(runs * self.quick_share)) if quick else runs
 
 
 def _main(runs: int) -> Experiment:
@@ -242,25 +258,68 @@ def _others_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
     return {"others": summarize(runs, td=[TD_SHORT, TD_FIG3, TD_LONG], by=[*_BY, "on_detect"])}
 
 
+RELAY_PLANNER = "covb"
+"""The searchers' planner of Fig. :data:`RELAY_FIG`: CovB, the paper's coverage planner. It
+searches nearly as well as mTSP, plans nothing ahead (mTSP would need a GA plan for every
+searcher count), and its drones make no effort to stay linked, so what the relays add is not
+mixed with a planner's own effort for the link."""
+RELAY_COUNTS = (1, 2, 3)
+"""The relay counts of Fig. :data:`RELAY_FIG`, each a sweep of its own."""
+RELAY_DRONES = tuple(n for n in DRONES if n > max(RELAY_COUNTS))
+"""Its team sizes: the paper's that leave a searcher beside every relay count."""
+RELAY_TDS = (TD_SHORT, TD_FIG3)
+"""Its target durations, s: those of Figs. 8 and 9, where success is not yet certain."""
+
+
+def relay_label(relays: int) -> str:
+    """A team of searchers and relays as figures and the report name it: "CovB + 2 relays"."""
+    return f"{get_planner(RELAY_PLANNER).label} + {relays} relay{'' if relays == 1 else 's'}"
+
+
+def _relays(runs: int) -> Experiment:
+    """Beyond the paper: searchers and relays, the same team sizes and ranges as the paper's
+    planners fly in ``main``. Their runs stop at notification or at the last t_d read: a
+    relay run re-plans the relays every t_s and costs many plain runs."""
+    return Experiment(
+        name="Beyond: searchers and relays", seed=SEED, runs=runs,
+        mission=Mission.build(horizon=max(RELAY_TDS), stop="notified"),
+        grid={"planner": [RELAY_PLANNER], "drones": list(RELAY_DRONES), "rc": list(RANGES),
+              "relays": list(RELAY_COUNTS)},
+    )
+
+
+def _relays_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    by = [*_BY, "relays"]
+    return {"relays": summarize(runs, td=list(RELAY_TDS), by=by),
+            "relays_runs": run_values(runs, list(RELAY_TDS), by)}
+
+
 BEYOND = 8
 """The number of the figure beyond the paper's seven: its planners with drones that report."""
 OTHERS = 9
 """The number of the figure of the other planners (the search patterns) beside the paper's."""
 RANGE_FIG = 10
 """The number of the figure of P_s against a continuous communication range."""
+RELAY_FIG = 11
+"""The number of the figure of searchers and relays against the paper's planners."""
 
 EXPERIMENTS = {e.name: e for e in (
-    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS, RANGE_FIG), _main, _main_tables),
+    PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS, RANGE_FIG, RELAY_FIG), _main,
+                    _main_tables),
     PaperExperiment("miss", (7,), _miss, _miss_tables),
     PaperExperiment("shadowing", (7,), _shadowing, _shadowing_tables),
     PaperExperiment("report", (BEYOND, OTHERS), _report, _report_tables),
     PaperExperiment("others", (OTHERS,), _others, _others_tables),
+    PaperExperiment("relays", (RELAY_FIG,), _relays, _relays_tables, quick_share=0.25),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
 :data:`CURVE_TDS`), ``range_curve`` (:func:`sarlink.at_range.range_curve`) and ``main_runs``
 (every run's values, ``run_values``, for the paired statistics of the claims; ``miss`` and
-``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too."""
+``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too;
+``relays`` the tables ``relays`` (by the relay count too) and ``relays_runs``, paired with
+``main_runs`` run by run; under ``--quick`` it flies a quarter of the runs (25 of 100), since
+a relay run costs some ten plain ones at r_c = 500 m."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:

@@ -37,15 +37,20 @@ from sarlink.paper.experiments import (
     RANGE_FIG,
     RANGE_TDS,
     RANGES,
+    RELAY_COUNTS,
+    RELAY_FIG,
+    RELAY_PLANNER,
+    RELAY_TDS,
     SIGMA,
     TD_FIG3,
     TD_LONG,
     TD_SHORT,
+    relay_label,
 )
-from sarlink.planners import get_planner, planner_names
+from sarlink.planners import PAPER_PLANNERS, get_planner, planner_names
 
 __all__ = ["FIGURES", "RELAYING", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6",
-           "fig7", "fig8", "fig9", "fig10", "network_values", "save"]
+           "fig7", "fig8", "fig9", "fig10", "fig11", "network_values", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
@@ -85,7 +90,7 @@ def _header(measure: Measure) -> str:
 
 
 _KEYS = {"rc": "r_c (m)", "drones": "N_m", "td": "t_d (s)", "p_miss": "p_miss",
-         "planner": "planner", "on_detect": "on detection"}
+         "planner": "planner", "on_detect": "on detection", "relays": "relays"}
 
 
 def _label(planner: str) -> str:
@@ -124,13 +129,16 @@ def _axes(fig: Figure | None, rows: int, cols: int, *,
     return fig, fig.subplots(rows, cols, squeeze=False, sharey=sharey)
 
 
-def _legend(fig: Figure, planners: Sequence[str], faint: Sequence[str] = ()) -> None:
+def _legend(fig: Figure, planners: Sequence[str], faint: Sequence[str] = (),
+            teams: Sequence[int] = ()) -> None:
     """One legend for the whole figure, planners in the registry's order; the ``faint`` ones
-    (references drawn dashed, see :func:`_lines`) after them."""
-    handles = [Line2D([], [], color=get_planner(p).colour, marker=get_planner(p).marker)
-               for p in planners]
+    (references drawn dashed, see :func:`_lines`) after them; before them all, the ``teams``
+    of searchers and relays by their relay count (:func:`_relay_lines`)."""
+    handles = [Line2D([], [], color=c, marker=m) for c, m in map(_relay_style, teams)]
+    handles += [Line2D([], [], color=get_planner(p).colour, marker=get_planner(p).marker)
+                for p in planners]
     handles += [Line2D([], [], color=get_planner(p).colour, ls="--", lw=0.9) for p in faint]
-    labels = [_label(p) for p in (*planners, *faint)]
+    labels = [relay_label(k) for k in teams] + [_label(p) for p in (*planners, *faint)]
     fig.legend(handles, labels, loc="outside upper center", ncols=min(len(labels), 5),
                frameon=False)
 
@@ -375,6 +383,54 @@ def fig10(range_curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
     return fig
 
 
+RELAY_STYLES = (("#8c8c8c", "v"), ("#4d4d4d", "D"), ("#000000", "X"))
+"""Colour and marker of the teams of searchers and relays, by relay count in increasing
+order (darker with more relays): greys, which no registered planner wears."""
+
+
+def _relay_style(relays: int) -> tuple[str, str]:
+    """The colour and marker of a team with ``relays`` relays: the count's place among the
+    experiment's counts picks the style (the first one for a count it does not fly)."""
+    place = RELAY_COUNTS.index(relays) if relays in RELAY_COUNTS else 0
+    return RELAY_STYLES[place % len(RELAY_STYLES)]
+
+
+def _relay_lines(ax: Axes, rows: pd.DataFrame, counts: Sequence[int]) -> None:
+    """P_s against N_m of the searchers and relays, one line per relay count with its
+    band, shifted sideways like :func:`_lines`' planners."""
+    middle = (len(counts) - 1) / 2
+    for i, k in enumerate(counts):
+        sub = rows[rows["relays"] == k].sort_values("drones")
+        colour, marker = _relay_style(k)
+        xs = sub["drones"].to_numpy(dtype=float) + 0.2 * (i - middle)
+        value, lo, hi = _band(P_S, sub)
+        ax.plot(xs, value, color=colour, marker=marker, label=relay_label(k))
+        ax.fill_between(xs, lo, hi, color=colour, alpha=_BAND, lw=0)
+
+
+@_style()
+def fig11(main: pd.DataFrame, relays: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Beyond the paper: searchers and relays (solid, with bands, one line per relay count)
+    against the paper's planners (dashed) at equal team size: P_s against N_m, a row per
+    t_d (1000 and 2000 s) and a column per r_c."""
+    fig, axes = _axes(fig, len(RELAY_TDS), len(RANGES))
+    counts = sorted(int(k) for k in relays["relays"].unique())
+    paper = [p for p in _planners(main) if p in PAPER_PLANNERS]
+    theirs = main[main["drones"].isin(relays["drones"].unique())]
+    for row, td in zip(axes, RELAY_TDS, strict=True):
+        for ax, rc in zip(row, RANGES, strict=True):
+            ours = _at(relays, td)
+            others = _at(theirs, td)
+            _lines(ax, others[others["rc"] == rc], "drones", P_S, paper, faint=True)
+            _relay_lines(ax, ours[ours["rc"] == rc], counts)
+            ax.set(title=f"$r_c$ = {rc:g} m, $t_d$ = {td:g} s",
+                   xlabel="number of drones $N_m$ (searchers + relays)", xticks=DRONES[::2])
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    _legend(fig, [], paper, counts)
+    return fig
+
+
 def save(fig: Figure, folder: Path, name: str) -> list[Path]:
     """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -471,6 +527,14 @@ def _fig10_values(range_curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
     return [("every 250 m", _values(rows, ["td", "drones", "planner", "rc"], [P_S]))]
 
 
+def _fig11_values(main: pd.DataFrame, relays: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    paper = main[main["planner"].isin(PAPER_PLANNERS) & main["drones"].isin(relays["drones"])]
+    rows = pd.concat([paper.assign(relays=0), relays])
+    rows = rows[rows["td"].isin(RELAY_TDS)]
+    return [("P_s with and without relays", _values(
+        rows, ["rc", "td", "drones", "relays", "planner"], [P_S]))]
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """A paper figure: what it shows, the summary tables it needs, how to draw it and the
@@ -525,6 +589,15 @@ FIGURES = {f.number: f for f in (
                "plan), evaluated from the runs of Figs. 2-6 (one flight per run, its notification "
                "staircase); dotted: the paper's three ranges.", ("range_curve",), fig10,
                _fig10_values),
+    FigureSpec(RELAY_FIG, "Beyond the paper: searchers and relays against the paper's planners "
+               "at equal team size. P_s against the number of drones N_m, searchers and relays "
+               f"together: {get_planner(RELAY_PLANNER).label} searchers with "
+               f"{', '.join(map(str, RELAY_COUNTS[:-1]))} or {RELAY_COUNTS[-1]} of the team's "
+               "drones as relays that keep them linked to the BS, one line per relay count "
+               "(solid, with 95% bands), beside the paper's five planners with every drone "
+               "searching (dashed), on the same runs (run k of every line searches for the "
+               f"same target); t_d = {RELAY_TDS[0]:g} and {RELAY_TDS[1]:g} s.",
+               ("main", "relays"), fig11, _fig11_values),
 )}
-"""Every figure by its number in the paper, and :data:`BEYOND`, :data:`OTHERS` and
-:data:`RANGE_FIG` after them."""
+"""Every figure by its number in the paper, and :data:`BEYOND`, :data:`OTHERS`,
+:data:`RANGE_FIG` and :data:`RELAY_FIG` after them."""

@@ -30,6 +30,11 @@ from sarlink.paper.experiments import (
     OTHERS,
     P_MISS,
     RANGES,
+    RELAY_COUNTS,
+    RELAY_DRONES,
+    RELAY_FIG,
+    RELAY_PLANNER,
+    RELAY_TDS,
     SEED,
     SIGMA,
     TD_FIG3,
@@ -38,6 +43,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, RELAYING, network_values
 from sarlink.paper.findings import CLAIMS, Finding, tally
+from sarlink.paper.relays import relay_points, relays_summary, relays_table, relays_text
 from sarlink.planners import PAPER_PLANNERS, get_planner
 
 __all__ = ["ReplayLink", "Stage", "machine", "write_report"]
@@ -363,6 +369,32 @@ def _others(tables: dict[str, pd.DataFrame]) -> list[_Block]:
         _List(others_text(tables["main"], tables["report"], others))]
 
 
+def _relays(tables: dict[str, pd.DataFrame]) -> list[_Block]:
+    if not {"main_runs", "relays_runs"} <= set(tables):
+        return []
+    points = relay_points(tables["main_runs"], tables["relays_runs"])
+    runs = tables["relays_runs"]["run"].nunique()
+    searcher = get_planner(RELAY_PLANNER).label
+    counts = ", ".join(map(str, RELAY_COUNTS))
+    return [_Heading("Beyond the paper: how many drones should hold the link?", 2), _Para(
+        "The paper ends on it: \"our future work will focus on determining the optimum "
+        "allocation of resources to different tasks of the mission\". Here a team of N_m "
+        f"drones is {searcher} searchers and {counts} relays (team.relays; docs/model.md, "
+        "Relays): drones that only keep the searchers linked to the BS, standing on a tree of "
+        "hops of at most r_c over the BS and where it believes the searchers are. Figure "
+        f"{RELAY_FIG} sets them against the paper's five planners with every drone searching, "
+        f"at equal team size (N_m = {RELAY_DRONES[0]}-{RELAY_DRONES[-1]}), r_c = "
+        f"{', '.join(f'{rc:g}' for rc in RANGES)} m and t_d = "
+        f"{' and '.join(f'{td:g}' for td in RELAY_TDS)} s, over {runs} runs per point, paired "
+        "run by run (run k of every team searches for the same target): each point against "
+        "the best of the paper's five there (the highest P_s on these runs, which favours "
+        f"the paper) and against {searcher} with every drone searching. Differences of P_s "
+        "carry the paired 95% interval of their discordant runs."),
+        _List(relays_text(points)),
+        _Table(relays_summary(points)),
+        _Table(relays_table(points), f"Every point: the {len(points)} paired comparisons")]
+
+
 def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
     if link is None:
         return []
@@ -388,7 +420,8 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
             *_network(tables),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
-            *_beyond(tables), *_others(tables), *_figures(out, figures, tables),
+            *_beyond(tables), *_others(tables), *_relays(tables),
+            *_figures(out, figures, tables),
             *_replay(out, replay)]
 
 

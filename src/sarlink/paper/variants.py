@@ -85,9 +85,10 @@ def load_runs(out: str | Path, experiment: str, reading: str = DEFAULT_READING
 
 def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[PaperExperiment],
            runs: int, *, workers: int | None, scheduler: str | None, progress: bool,
-           ) -> tuple[list[dict[str, pd.DataFrame]], Stage]:
+           quick: bool = False) -> tuple[list[dict[str, pd.DataFrame]], Stage]:
     """The summary tables of ``experiments`` under each set of choices in ``readings``, from
-    the sweeps of every planner's runs they need, and how long it took.
+    the sweeps of every planner's runs they need (``runs`` per point, or an experiment's
+    share of them when ``quick``: :meth:`PaperExperiment.runs`), and how long it took.
 
     The readings are swept one after the other on one set of workers, each holding only its
     own runs in memory (a folder shared by readings is run once and read again): all of a
@@ -100,7 +101,7 @@ def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[
     for choices in readings:
         wanted.append({})
         for exp in experiments:
-            sweeps = dict(_planner_sweeps(exp, runs, choices))
+            sweeps = dict(_planner_sweeps(exp, exp.runs(runs, quick), choices))
             wanted[-1][exp.name] = list(sweeps)
             jobs.update(sweeps)
     resumed = sum((runs_folder / folder / "experiment.json").exists() for folder in jobs)
@@ -121,6 +122,8 @@ def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[
     stage = Stage(f"sweep {', '.join(e.name for e in experiments)}",
                   f"{len(jobs)} sweeps (a planner under the choices that reach it), {points} "
                   f"grid points × {runs} runs"
+                  + "".join(f" ({e.name}: {e.runs(runs, quick)})" for e in experiments
+                            if e.runs(runs, quick) != runs)
                   + (f"; {resumed} found stored and resumed or reused" if resumed else ""),
                   time.perf_counter() - t0)
     return tables, stage
@@ -128,14 +131,15 @@ def _sweep(runs_folder: Path, readings: list[dict[str, str]], experiments: list[
 
 def reading_tables(runs_folder: Path, experiments: list[PaperExperiment], runs: int,
                    choices: dict[str, str], *, workers: int | None = None,
-                   scheduler: str | None = None, progress: bool = True,
+                   scheduler: str | None = None, progress: bool = True, quick: bool = False,
                    ) -> tuple[dict[str, pd.DataFrame], list[Stage]]:
     """The summary tables of ``experiments`` under ``choices``, from runs stored (or resumed)
-    under ``runs_folder``, and how long the sweep took."""
+    under ``runs_folder``, and how long the sweep took; ``quick``: each experiment flies its
+    share of ``runs`` (:meth:`PaperExperiment.runs`)."""
     if not experiments:
         return {}, []
     (tables,), stage = _sweep(runs_folder, [choices], experiments, runs, workers=workers,
-                              scheduler=scheduler, progress=progress)
+                              scheduler=scheduler, progress=progress, quick=quick)
     return tables, [stage]
 
 
