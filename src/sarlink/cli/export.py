@@ -9,7 +9,7 @@ import typer
 from rich.table import Table
 
 from sarlink.cli import options
-from sarlink.cli.common import console, output_folder, user_errors
+from sarlink.cli.common import console, output_folder, team_text, user_errors
 from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import ConfigError
 from sarlink.export import export_mission
@@ -41,7 +41,7 @@ def export(
                               firmware=firmware,  # type: ignore[arg-type]
                               seed=seed, run=run)
     label = get_planner(mission.team.planner).label
-    table = Table(title=f"{label}, {mission.team.drones} drones, {altitude:g} m above the BS, "
+    table = Table(title=f"{label}, {team_text(mission)}, {altitude:g} m above the BS, "
                         f"{firmware}: files in {folder}", title_justify="left")
     for name in ("drone", "flies", "length", "flight time", "files"):
         table.add_column(name, justify="right" if name in ("drone", "length") else "left")
