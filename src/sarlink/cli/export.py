@@ -47,7 +47,9 @@ def export(
         table.add_column(name, justify="right" if name in ("drone", "length") else "left")
     for d in team.drones:
         files = ", ".join(p.name for p in d.files) or "[dim]none: decides in flight[/]"
-        table.add_row(str(d.drone), "its route" if d.kind == "route" else "simulated track",
+        flies = {"route": "its route", "relay": "simulated track (relay)"}.get(
+            d.kind, "simulated track")
+        table.add_row(str(d.drone), flies,
                       f"{d.length / 1000:.2f} km", f"{d.flight_time / 60:.1f} min", files)
     console.print(table)
     console.print(f"team map: {team.geojson}", highlight=False)
