@@ -6,6 +6,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 from typer.testing import CliRunner
 
 from sarlink import Mission, simulate
@@ -45,6 +46,40 @@ def test_simulate_summary_and_plot(tmp_path) -> None:
     assert "BS notified at" in out.stdout and "ConB" in out.stdout
     assert "BS's network, deepest" in out.stdout and "farthest connected drone" in out.stdout
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_simulate_with_relays_reports_them_and_draws_their_legs(tmp_path) -> None:
+    """The issue's command: the JSON is the API's run of the team with relays, the summary
+    names them, and the figure draws each relay's legs in the relaying mode apart."""
+    flags = ["simulate", "--planner", "covb", "--drones", "8", "--relays", "3", "--rc", "500"]
+    out = runner.invoke(app, [*flags, "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    mission = Mission.build(planner="covb", drones=8, relays=3, rc=500.0)
+    expected = simulate(mission, trajectory=True)
+    assert (data["drones"], data["relays"]) == (8, 3)
+    assert (data["t_detect"], data["t_notify"], data["connected_fraction"]) == (
+        expected.t_detect, expected.t_notify, expected.connected_fraction())
+    png = tmp_path / "relays.png"
+    out = runner.invoke(app, [*flags, "--plot", str(png)])
+    assert "CovB: 8 drones, 3 of them relays, r_c = 500 m" in out.stdout
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    import matplotlib.pyplot as plt
+
+    from sarlink.engine.codes import Mode
+    from sarlink.plots import plot_run
+
+    ax = plot_run(expected, mission)
+    traj = expected.trajectory
+    assert traj is not None and "N = 8 (3 relays)" in ax.get_title()
+    legs = [line for line in ax.get_lines() if line.get_label() == "relays, holding the link"]
+    (first,) = legs  # one legend entry for the three
+    relaying = traj.mode[:, 5] == Mode.RELAYING
+    assert relaying.any() and not relaying.all()  # it flies home at the end of its budget
+    drawn = np.asarray(first.get_xydata())
+    np.testing.assert_array_equal(np.isnan(drawn[:, 0]), ~relaying)
+    np.testing.assert_array_equal(drawn[relaying], traj.positions[relaying, 5])
+    plt.close(ax.figure)
 
 
 def test_simulate_reads_a_mission_file_and_flags_override_it(tmp_path) -> None:
@@ -97,11 +132,13 @@ def test_plugins_lists_every_kind_and_planners_is_the_same_listing() -> None:
     text = runner.invoke(app, ["plugins"])
     assert text.exit_code == 0, text.output
     for registry in KINDS.values():
-        assert f"{registry.label}s ({registry.group})" in text.output
+        assert f"{registry.plural} ({registry.group})" in text.output
+    assert "relay strategies (sarlink.relays)" in text.output
     data = json.loads(runner.invoke(app, ["plugins", "--json"]).output)
     assert data.keys() == {f"{kind}s" for kind in KINDS} | {"broken"}
     assert [p["name"] for p in data["planners"]][:5] == ["mtsp", "covb", "conb", "mtsp-conb",
                                                          "concov"]
     assert {r["name"]: r["origin"] for r in data["radios"]} == {"disc": "sarlink",
                                                                 "shadowing": "sarlink"}
+    assert data["relays"] == [{"name": "tree", "origin": "sarlink"}]
     assert json.loads(runner.invoke(app, ["planners", "--json"]).output) == data

@@ -280,6 +280,15 @@ def test_a_route_planner_is_refused() -> None:
         parallel_env(Mission.build(planner="sector", drones=3))
 
 
+@pytest.mark.parametrize("make", [parallel_env, env, BatchEnv])
+def test_a_team_with_relays_is_refused_in_one_line(make: object) -> None:
+    """Every agent is a drone steered like a searcher: relays, which take no direction, are
+    refused by each way of making the environment."""
+    with pytest.raises(ConfigError, match=r"^team\.relays = 2: sarlink\.env steers every drone "
+                       r"as a searcher and cannot take relays yet; allowed: team\.relays = 0$"):
+        make(SMALL.replace(relays=2))  # type: ignore[operator]
+
+
 def test_the_learning_example_runs(monkeypatch: pytest.MonkeyPatch,
                                    capsys: pytest.CaptureFixture[str]) -> None:
     """examples/learn_policy.py, tiny: one generation, a few short runs."""

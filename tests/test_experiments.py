@@ -22,6 +22,7 @@ from typer.testing import CliRunner
 
 from sarlink import ConfigError, Experiment, Mission, load, prepare, sweep
 from sarlink.cli import app
+from sarlink.config import mission_hash
 from sarlink.execution import _environment
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "sweep.toml"
@@ -252,3 +253,53 @@ def test_cli_errors_are_one_line(reference: tuple[Path, pd.DataFrame], tmp_path:
     result = runner.invoke(app, [a.format(**paths) for a in args])
     assert result.exit_code == 2
     assert message in " ".join(result.output.split()) and "Traceback" not in result.output
+
+
+# -- the relay count as a grid parameter -------------------------------------------------------
+
+RELAYS_TOML = """\
+seed = 5
+runs = 2
+
+[mission.team]
+planner = "covb"
+drones = 8
+
+[mission.channel]
+rc = 500.0
+
+[mission.timing]
+horizon = 900.0
+
+[grid]
+relays = [0, 1, 2, 3]
+"""
+
+
+def test_a_sweep_over_the_relay_count_stores_it_beside_the_runs(tmp_path: Path) -> None:
+    """``sarlink sweep`` of a grid over ``relays``: a ``relays`` column, each row the engine's
+    run of its point; the point without relays keeps the folder (the mission hash) that
+    sarlink gave this mission before relays existed, so earlier results stay valid."""
+    path = tmp_path / "relays.toml"
+    path.write_text(RELAYS_TOML)
+    out = runner.invoke(app, ["sweep", str(path), "--out", str(tmp_path / "out"), "--workers",
+                              "1", "--quiet"])
+    assert out.exit_code == 0, out.output
+    df = load(tmp_path / "out")
+    assert df.groupby("relays")["run"].apply(list).to_dict() == {k: [0, 1] for k in range(4)}
+    for relays, run in [(0, 1), (3, 0)]:
+        row = df[(df.relays == relays) & (df.run == run)].iloc[0]
+        expected = prepare(Mission.build(planner="covb", drones=8, rc=500.0, horizon=900.0,
+                                         relays=relays)).run(5, run).row()
+        for name in ("t_detect", "t_notify", "detector", "t_reachable", "connected_fraction"):
+            assert row[name] == pytest.approx(expected[name], nan_ok=True)
+    folders = {mission_hash(m): p["relays"] for p, m in Experiment.from_toml(path).points()}
+    assert {p.name for p in (tmp_path / "out" / "points").iterdir()} == folders.keys()
+    assert folders["bfea8fbdf2ba1fa9"] == 0  # the hash computed by sarlink before relays
+
+
+def test_an_unknown_relay_strategy_is_refused_before_a_sweep_starts(tmp_path: Path) -> None:
+    with pytest.raises(ConfigError, match=r"grid point relay_strategy='chain': "
+                       r"team\.relay_strategy: unknown relay strategy 'chain'; known: tree"):
+        sweep(small(grid={"relay_strategy": ["tree", "chain"]}), tmp_path / "out")
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.parquet"))

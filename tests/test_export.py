@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 from geojson_pydantic import FeatureCollection
 from pymavlink import mavutil, mavwp
-from shapely.geometry import LineString, Polygon, shape
+from shapely.geometry import LineString, MultiPoint, Polygon, shape
 
-from sarlink import ConfigError, Mission
+from sarlink import ConfigError, Mission, simulate
 from sarlink.config.region import area_polygon
-from sarlink.export import export_mission, mission_frame
+from sarlink.export import RELAY_NOTE, TRACK_POINTS, export_mission, mission_frame
 from sarlink.planners import get_planner
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -456,6 +456,40 @@ def test_the_team_geojson_validates(tmp_path: Path, valley: Mission) -> None:
         if feature["properties"]["role"] == "route":
             props = feature["properties"]
             assert props["flight_time_s"] == pytest.approx(props["length_m"] / 5.0, abs=0.2)
+
+
+def test_relays_are_written_as_their_simulated_tracks(tmp_path: Path, valley: Mission) -> None:
+    """Relays fly no route (the BS chooses their points in the air): no upload file, and in
+    the GeoJSON their simulated tracks as the distributed drones' are, marked with their task,
+    which stay in the valley and out of its no-fly zone. The searchers keep their routes."""
+    mission = valley.replace(relays=2)  # three searchers, all on mTSP routes (N_r = 3)
+    out = export_mission(mission, tmp_path, seed=3)
+    assert [(d.drone, d.kind) for d in out.drones] == [
+        (0, "route"), (1, "route"), (2, "route"), (3, "relay"), (4, "relay")]
+    assert sorted(p.name for p in tmp_path.glob("*.plan")) == [
+        "drone-00.plan", "drone-01.plan", "drone-02.plan"]
+    assert out.notes == (f"the relays, drones 3, 4, {RELAY_NOTE} (seed 3, run 0)",)
+    data = json.loads(out.geojson.read_text())
+    FeatureCollection.model_validate(data)
+    tracks = {f["properties"]["drone"]: f for f in data["features"]
+              if f["geometry"]["type"] == "LineString"}
+    assert {i: (f["properties"]["role"], f["properties"]["task"]) for i, f in tracks.items()} == {
+        **{i: ("route", "searcher") for i in range(3)},
+        **{i: ("simulated track", "relay") for i in (3, 4)}}
+    flown = simulate(mission, seed=3, trajectory=True).trajectory
+    assert flown is not None
+    frame = mission_frame(mission)
+    area = area_polygon(mission.region, mission.area.size)
+    every = max(1, len(flown.t) // TRACK_POINTS)
+    for i in (3, 4):
+        lon, lat = np.asarray(tracks[i]["geometry"]["coordinates"]).T
+        x, y = frame.to_local(lon, lat)
+        expected = np.vstack([flown.positions[::every, i], flown.positions[-1:, i]])
+        assert np.hypot(x - expected[:, 0], y - expected[:, 1]).max() < 0.01  # m
+        assert np.hypot(x - x[0], y - y[0]).max() > mission.channel.rc / 2  # it left the BS
+        assert area.buffer(0.01).covers(MultiPoint(np.column_stack([x, y])))
+        assert tracks[i]["properties"]["length_m"] == pytest.approx(out.drones[i].length,
+                                                                    abs=0.1)
 
 
 def test_missions_off_the_map_cannot_be_exported(tmp_path: Path) -> None:

@@ -1,7 +1,7 @@
-"""Plug-ins end to end: rules, radio models and planners defined outside sarlink
-(tests/plugins/), registered in code or found through entry points, at the engine's full
-behaviour; one registry for every kind; the contract catching false declarations; and bad
-plug-ins, each reported in one line naming the plug-in."""
+"""Plug-ins end to end: rules, radio models, relay strategies and planners defined outside
+sarlink (tests/plugins/), registered in code or found through entry points, at the engine's
+full behaviour; one registry for every kind; the contract catching false declarations and
+faulty relay strategies; and bad plug-ins, each reported in one line naming the plug-in."""
 
 from __future__ import annotations
 
@@ -20,6 +20,7 @@ from sarlink import (
     DistributedRule,
     Experiment,
     Mission,
+    RelayStrategy,
     RoutePlanner,
     RulePlanner,
     get_planner,
@@ -27,15 +28,17 @@ from sarlink import (
     planner_names,
     register_planner,
     register_radio,
+    register_relay_strategy,
+    relay_strategy_names,
     simulate,
     sweep,
 )
-from sarlink.engine import RadioModel, radios
+from sarlink.engine import RadioModel, radios, relays
 from sarlink.engine.radios import DISC, lognormal
 from sarlink.engine.streams import run_streams
 from sarlink.planners import registry, rules
 from sarlink.registry import KINDS, adopt_plugins, plugins_in_code
-from sarlink.testing import check_rule
+from sarlink.testing import check_relay_strategy, check_rule
 
 PLUGINS = Path(__file__).parent / "plugins"
 sys.path.insert(0, str(PLUGINS))
@@ -45,6 +48,7 @@ from homebound import HOMEBOUND  # noqa: E402
 from liars import CLINGY  # noqa: E402
 from radios_outside import CUT, FULL, HALF, IMPOSTOR  # noqa: E402
 from random_walk import RANDOM_WALK  # noqa: E402
+from relays_outside import FAULTY, MIDPOINT  # noqa: E402
 
 pytestmark = pytest.mark.usefixtures("fresh_registries")  # what a test registers, it alone sees
 
@@ -121,7 +125,9 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
     (info / "entry_points.txt").write_text(
         "[sarlink.planners]\ncovb-again = covb_again:PLANNER\nbroken = no_such_module:X\n"
         "[sarlink.radios]\ncut = radios_outside:CUT\ndisc = radios_outside:IMPOSTOR\n"
-        "not-a-radio = covb_again:PLANNER\n")
+        "not-a-radio = covb_again:PLANNER\n"
+        "[sarlink.relays]\nmidpoint = relays_outside:MIDPOINT\n"
+        "not-a-strategy = radios_outside:CUT\n")
     monkeypatch.syspath_prepend(str(tmp_path))
     for kind in KINDS.values():
         monkeypatch.setattr(kind, "_loaded", False)
@@ -129,6 +135,9 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
     origin = registry.planner_entries()["covb-again"].origin
     assert origin == "sarlink-testplug 1.2 (entry point covb-again)"
     assert "cut-bs" in radios.radio_names()
+    assert relay_strategy_names() == ["tree", "midpoint"]
+    assert relays.RELAY_STRATEGIES.entries()["midpoint"].origin == (
+        "sarlink-testplug 1.2 (entry point midpoint)")
     with pytest.raises(ConfigError, match="plug-in broken failed to load: sarlink-testplug 1.2 "
                        r"\(entry point broken\): ModuleNotFoundError"):
         get_planner("nope")
@@ -136,7 +145,10 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
     from sarlink.cli.plugins import listing
 
     broken = {(b["kind"], b["entry_point"]): b["error"] for b in listing()["broken"]}
-    assert broken.keys() == {("planner", "broken"), ("radio", "disc"), ("radio", "not-a-radio")}
+    assert broken.keys() == {("planner", "broken"), ("radio", "disc"), ("radio", "not-a-radio"),
+                             ("relay", "not-a-strategy")}
+    assert "register_relay_strategy takes a sarlink RelayStrategy" in broken[
+        "relay", "not-a-strategy"]
     assert broken["radio", "disc"].endswith("radio model name 'disc' is taken (from sarlink)")
     assert "register_radio takes a sarlink RadioModel" in broken["radio", "not-a-radio"]
     assert radios.get_radio("disc") is DISC
@@ -151,6 +163,9 @@ def test_a_taken_name_is_refused_without_replace_in_every_kind() -> None:
         register_radio(IMPOSTOR)
     with pytest.raises(ConfigError, match=r"planner name 'covb' is taken \(from sarlink\)"):
         register_planner(replace(PLANNER, name="covb"))
+    with pytest.raises(ConfigError, match=r"relay strategy name 'tree' is taken \(from "
+                       r"sarlink\); pass replace=True"):
+        register_relay_strategy(replace(MIDPOINT, name="tree"))
     assert register_radio(DISC) is DISC and register_planner(PLANNER) is PLANNER
     assert register_planner(PLANNER) is PLANNER  # the same object again: nothing changes
     assert radios.RADIOS.entries()["disc"].origin == "sarlink"
@@ -174,9 +189,10 @@ def test_what_is_registered_in_code_is_adopted_by_workers_and_nothing_else() -> 
     assert not any(plugins_in_code().values())  # the built-ins are sarlink's, not code's
     register_radio(CUT)
     register_planner(PLANNER)
+    register_relay_strategy(MIDPOINT)
     found = plugins_in_code()
     assert {k: [e.obj.name for e in v] for k, v in found.items()} == {
-        "radio": ["cut-bs"], "planner": ["covb-again"]}
+        "radio": ["cut-bs"], "relay": ["midpoint"], "planner": ["covb-again"]}
     adopt_plugins(found)  # the same objects: nothing changes
     register_planner(replace(PLANNER, label="Other"), replace=True)
     with pytest.raises(ConfigError, match="planner name 'covb-again' means another planner in "
@@ -198,6 +214,12 @@ def test_the_registries_hold_what_is_on_disk() -> None:
                for obj in vars(importlib.import_module(f"{radios.__name__}.{m.name}")).values()
                if isinstance(obj, RadioModel)}
     assert defined == {n for n, e in radios.RADIOS.entries().items() if e.origin == "sarlink"}
+    strategies = {obj.name for m in pkgutil.iter_modules(relays.__path__)
+                  for obj in vars(importlib.import_module(f"{relays.__name__}.{m.name}")).values()
+                  if isinstance(obj, RelayStrategy)} | {
+                      obj.name for obj in vars(relays).values() if isinstance(obj, RelayStrategy)}
+    assert strategies == {n for n, e in relays.RELAY_STRATEGIES.entries().items()
+                          if e.origin == "sarlink"} == {"tree"}
 
 
 def test_the_contract_catches_a_rule_that_declares_range_free_but_reads_the_links() -> None:
@@ -223,6 +245,33 @@ def test_the_contract_checks_that_readings_are_fields_of_readings() -> None:
     check_rule(RANDOM_WALK.rule, runs=1, horizon=600.0)
 
 
+def test_a_relay_strategy_from_outside_flies_by_name_and_keeps_the_contract() -> None:
+    """The example of docs/plugins.md passes every check of the contract, and flies as it
+    says: both relays, given one point at the same steps, fly as one, out from the BS."""
+    register_relay_strategy(MIDPOINT)
+    check_relay_strategy("midpoint", runs=1, horizon=900.0, rc=500.0)
+    mission = Mission.build(drones=6, relays=2, relay_strategy="midpoint", rc=500.0,
+                            horizon=900.0)
+    traj = simulate(mission, seed=7, trajectory=True).trajectory
+    assert traj is not None
+    np.testing.assert_array_equal(traj.positions[:, 4], traj.positions[:, 5])
+    bs = np.asarray(mission.area.bs_xy)
+    assert np.hypot(*(traj.positions[:, 4] - bs).T).max() > mission.channel.rc / 2
+
+
+@pytest.mark.parametrize(("alpha", "message"), [
+    (0.25, r"relay strategy 'faulty', run 0 of seed 7 with 1 of 6 drones relays: place wrote "
+           r"the point \(nan, [0-9.]+\) for relay 5 at step 0; a point must be finite"),
+    (0.75, "relay strategy 'faulty', run 0 of seed 7 with 1 of 6 drones relays: the run "
+           "differs when flown again"),
+])
+def test_the_contract_catches_a_faulty_relay_strategy(alpha: float, message: str) -> None:
+    register_relay_strategy(FAULTY)
+    with pytest.raises(AssertionError, match=message):
+        check_relay_strategy("faulty", relays=(1,), runs=1, horizon=600.0, alpha=alpha)
+    check_relay_strategy("faulty", relays=(1,), runs=1, horizon=600.0, alpha=0.5)  # no fault
+
+
 # -- bad plug-ins: one line naming the plug-in and what is wrong ------------------------------
 
 
@@ -230,6 +279,9 @@ def test_a_hook_with_the_wrong_signature_is_refused_when_the_rule_is_made() -> N
     with pytest.raises(ConfigError, match=r"rule 'few': decide\(k, p, obs, ws, deciding, vx\) "
                        "must take exactly 7 positional parameters"):
         DistributedRule("few", bad.decide_too_few)
+    with pytest.raises(ConfigError, match=r"relay strategy 'few': place\(k, p, obs, ws, "
+                       r"deciding, vx\) must take exactly 7 positional parameters"):
+        RelayStrategy("few", bad.decide_too_few)
 
     def local(k, p, obs, ws, deciding, vx, vy):  # type: ignore[no-untyped-def]
         pass

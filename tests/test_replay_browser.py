@@ -42,6 +42,14 @@ def side_by_side(tmp_path_factory) -> tuple[Replay, Path]:
     return page, page.write(tmp_path_factory.mktemp("replay") / "compare.html")
 
 
+@pytest.fixture(scope="module")
+def relayed(tmp_path_factory) -> tuple[Replay, Path]:
+    """CovB's eight drones, the last three relays: at 300 s they hold a chain from the BS."""
+    mission = Mission.build(planner="covb", drones=8, relays=3, rc=500.0, horizon=1200.0)
+    page = replay(simulate(mission, seed=0, trajectory=True), mission)
+    return page, page.write(tmp_path_factory.mktemp("replay") / "relays.html")
+
+
 def _load(browser, path: Path) -> None:
     open_page(browser, path)
     browser.get_log("browser")  # start each test's console record afresh
@@ -99,25 +107,55 @@ def test_seeking_shows_the_trajectory_s_state(browser, single) -> None:
     assert _console_errors(browser) == []
 
 
+def _coloured_by_mode(browser, drawn: dict) -> set[str]:
+    """Check that every drone no other could cover is filled with its mode's colour, in the
+    canvas's pixels; return the modes so checked."""
+    colours = browser.execute_script("return sarlinkReplay.colours().modes")
+    checked = set()
+    xy = np.array([[d["px"], d["py"]] for d in drawn["drones"]])
+    for i, d in enumerate(drawn["drones"]):
+        if np.sort(np.hypot(*(xy - xy[i]).T))[1] < 20:
+            continue  # another drone could cover this one
+        rgba = browser.execute_script(
+            "const c = document.querySelector('canvas'); const r = devicePixelRatio;"
+            "return Array.from(c.getContext('2d').getImageData("
+            "Math.round(arguments[0] * r), Math.round(arguments[1] * r), 1, 1).data);",
+            d["px"], d["py"])
+        want = colours[d["mode"]]
+        assert rgba[:3] == [int(want[k:k + 2], 16) for k in (1, 3, 5)], (drawn["t"], i, d)
+        checked.add(d["mode"])
+    return checked
+
+
 def test_drones_are_drawn_where_they_are_in_the_colour_of_their_mode(browser, single) -> None:
     _load(browser, single[1])
-    colours = browser.execute_script("return sarlinkReplay.colours().modes")
     checked = set()
     for t in (1000.0, 3800.0):  # everyone searching; some drones returning
         (drawn,) = _seek(browser, t)
-        xy = np.array([[d["px"], d["py"]] for d in drawn["drones"]])
-        for i, d in enumerate(drawn["drones"]):
-            if np.sort(np.hypot(*(xy - xy[i]).T))[1] < 20:
-                continue  # another drone could cover this one
-            rgba = browser.execute_script(
-                "const c = document.querySelector('canvas'); const r = devicePixelRatio;"
-                "return Array.from(c.getContext('2d').getImageData("
-                "Math.round(arguments[0] * r), Math.round(arguments[1] * r), 1, 1).data);",
-                d["px"], d["py"])
-            want = colours[d["mode"]]
-            assert rgba[:3] == [int(want[k:k + 2], 16) for k in (1, 3, 5)], (t, i, d)
-            checked.add(d["mode"])
+        checked |= _coloured_by_mode(browser, drawn)
     assert checked == {"searching", "returning"}
+
+
+def test_relays_are_drawn_relaying_in_their_own_colour_holding_the_chain(browser,
+                                                                        relayed) -> None:
+    page, path = relayed
+    _load(browser, path)
+    colours = browser.execute_script("return sarlinkReplay.colours().modes")
+    assert list(colours) == [m.name.lower() for m in Mode]
+    assert len(set(colours.values())) == len(colours)  # relaying has a colour of its own
+    assert "drone relaying" in browser.find_element(By.ID, "legend").text
+    (drawn,) = _seek(browser, 300.0)
+    _check_state(drawn, page, 0, 300.0)
+    assert [d["mode"] for d in drawn["drones"]] == ["searching"] * 5 + ["relaying"] * 3
+    assert "relaying" in _coloured_by_mode(browser, drawn)
+    traj = page.panels[0].result.trajectory
+    k = int(np.searchsorted(traj.t, 300.0))
+    routed = np.append(traj.bs_route[k], True)  # the BS, node 8
+    chain = np.triu(traj.links[k, :9, :9] & routed[:, None] & routed[None, :], 1)
+    assert chain[5:].any() or chain[:, 5:].any()  # a relay's link in the BS's component
+    assert drawn["componentLinks"] == int(chain.sum())
+    assert "N = 8 (3 relays)" in browser.find_element(By.TAG_NAME, "h1").text
+    assert _console_errors(browser) == []
 
 
 def test_the_timeline_holds_the_run_s_events_and_jumps_to_them(browser, single, tmp_path

@@ -350,11 +350,11 @@ def start_workers(workers: int | None = None, *, scheduler: str | None = None,
 
 def _check_names(experiment: Experiment) -> None:
     """Raise a :class:`ConfigError` naming the experiment's key (``mission.team.planner`` or
-    a grid point) unless every planner and radio model it names is known."""
+    a grid point) unless every planner, radio model and relay strategy it names is known."""
     try:
         check_mission(experiment.mission)
     except ConfigError as exc:
-        if not {"planner", "radio"} & set(experiment.grid):
+        if not {"planner", "radio", "relay_strategy"} & set(experiment.grid):
             raise ConfigError(f"mission.{exc}") from None
     for params, mission in experiment.points():
         try:

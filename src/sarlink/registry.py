@@ -92,6 +92,11 @@ class Registry(Generic[T]):
         self._loaded = False
         KINDS[kind] = self
 
+    @property
+    def plural(self) -> str:
+        """How listings call several: ``radio models``, ``relay strategies``."""
+        return self.label[:-1] + "ies" if self.label.endswith("y") else self.label + "s"
+
     def register(self, obj: T, *, replace: bool = False, origin: str | None = None) -> T:
         """Make ``obj`` known by its name; returns it. Registering the same object again
         changes nothing; another object under a taken name needs ``replace``.

@@ -20,12 +20,11 @@ __all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prep
 
 def check_mission(mission: Mission) -> None:
     """Raise a :class:`~sarlink.ConfigError` unless the mission's planner, radio model and
-    relay strategy (if it has relays) are known: what cannot be checked before plug-ins are
-    loaded, checked where work starts."""
+    relay strategy are known: what cannot be checked before plug-ins are loaded, checked where
+    work starts."""
     get_planner(mission.team.planner)
     get_radio(mission.radio)
-    if mission.team.relays:
-        get_relay_strategy(mission.team.relay_strategy)
+    get_relay_strategy(mission.team.relay_strategy)
 
 
 def warm_up(planner: str, radio: str, *, ranges: bool = False,

@@ -9,7 +9,12 @@ helper flies or calls a registered plug-in and raises an ``AssertionError`` nami
   reporting until a drone reports): a false one makes sarlink's shortcuts give wrong rows;
 - :func:`check_radio`: a :class:`~sarlink.RadioModel`'s thresholds are finite, symmetric and
   zero towards the padding, its nominal range positive, a ``static`` model's never change
-  after step 0, and a ``range_free`` one's scale with r_c².
+  after step 0, and a ``range_free`` one's scale with r_c²;
+- :func:`check_relay_strategy`: teams with relays fly with a
+  :class:`~sarlink.RelayStrategy` (every drone in the area, the BS not notified before the
+  detection), the same ``(seed, run)`` flies the same, and the points its ``place`` hook
+  writes for the relays are finite (the kernel ignores others, so such a relay would stand
+  still unnoticed).
 
 In a plug-in's test suite::
 
@@ -22,23 +27,27 @@ In a plug-in's test suite::
 
 from __future__ import annotations
 
+import math
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from sarlink.config import Mission, Readings
-from sarlink.engine import Prepared, RadioModel, Steering, get_radio
+from sarlink.engine import Observation, Prepared, RadioModel, Steering, get_radio
 from sarlink.engine.codes import Mode
+from sarlink.engine.geometry import FAR, PAD
 from sarlink.engine.hooks import DistributedRule
+from sarlink.engine.relays import get_relay_strategy
+from sarlink.engine.relays import none as no_relays
 from sarlink.planners import get_planner
 from sarlink.playback import replay
 from sarlink.result import RunResult
-from sarlink.simulation import simulate
+from sarlink.simulation import prepare, simulate
 
-__all__ = ["check_planner", "check_radio", "check_rule", "check_run"]
+__all__ = ["check_planner", "check_radio", "check_relay_strategy", "check_rule", "check_run"]
 
 
 def check_run(result: RunResult, mission: Mission) -> None:
@@ -203,3 +212,89 @@ def _thresholds(model: RadioModel, n: int, steps: int, seed: int,
         later.append(thr2.copy())
     static = model.static if isinstance(model.static, bool) else bool(model.static(p, rp))
     return float(model.nominal(p, rp)), static, later
+
+
+def check_relay_strategy(name: str, *, planner: str = "covb", drones: int = 6,
+                         relays: Sequence[int] = (1, 3), runs: int = 2, horizon: float = 1200.0,
+                         seed: int = 7, **params: Any) -> None:
+    """Fly teams of ``drones`` drones, ``relays`` of them relays placed by the registered relay
+    strategy ``name`` and the others searching with ``planner``, and check the contract
+    (module docstring). ``params`` are further flat mission parameters (``rc=500.0``).
+
+    The points are checked by calling the strategy's hooks on the states each run recorded,
+    in step order, as the kernel calls them (:func:`_recorded_states`).
+    """
+    strategy = get_relay_strategy(name)
+    for k in relays:
+        mission = Mission.build(planner=planner, drones=drones, relays=k, relay_strategy=name,
+                                horizon=horizon, **params)
+        prepared = prepare(mission)
+        for run in range(runs):
+            where = (f"relay strategy {name!r}, run {run} of seed {seed} with {k} of {drones} "
+                     "drones relays")
+            result = prepared.run(seed, run, trajectory=True)
+            try:
+                check_run(result, mission)
+            except AssertionError as exc:
+                raise AssertionError(f"{where}: {exc}") from None
+            assert _same(result, prepared.run(seed, run, trajectory=True)), (
+                f"{where}: the run differs when flown again")
+            assert result.trajectory is not None
+            gx, gy = result.trajectory.positions[0].T.copy()  # the kernel's first points
+            ws = None
+            for step, obs in _recorded_states(prepared, result, seed):
+                if step == 0:
+                    ws = (strategy.prepare or no_relays.prepare)(prepared.params, obs)
+                strategy.place(step, prepared.params, obs, ws, prepared.edges, gx, gy)
+                bad = (obs.mode == Mode.RELAYING) & ~(np.isfinite(gx) & np.isfinite(gy))
+                if bad.any():
+                    i = int(np.argmax(bad))
+                    raise AssertionError(f"{where}: place wrote the point ({gx[i]}, {gy[i]}) "
+                                         f"for relay {i} at step {step}; a point must be "
+                                         "finite (the kernel ignores it and the relay stays)")
+
+
+def _recorded_states(prepared: Prepared, result: RunResult, seed: int
+                     ) -> Iterator[tuple[int, Observation]]:
+    """The states a run recorded (``trajectory=True``), step by step, as the hooks see them:
+    one :class:`Observation` whose arrays change in place as the kernel's do. What the
+    trajectory does not record stays as at take-off: the decision clocks, the progress
+    along the routes and the pairs within sensing range."""
+    traj = result.trajectory
+    assert traj is not None
+    p = prepared.params
+    n = prepared.mission.team.drones
+    m = n + 2
+    mp = -(-m // PAD) * PAD
+    px, py, pz = np.full(mp, FAR), np.full(mp, FAR), np.zeros(mp)
+    pz[:n] = p.altitude
+    px[n], py[n] = p.bs_x, p.bs_y
+    px[n + 1], py[n + 1] = result.target
+    hx, hy = np.empty(n), np.empty(n)
+    mode, knows = np.empty(n, dtype=np.int8), np.empty(n, dtype=np.bool_)
+    adj = _bits(np.zeros((m, m), dtype=bool))
+    routed, spread = _bits(np.zeros(m, dtype=bool)), _bits(np.zeros(m, dtype=bool))
+    start = prepared.wp_start
+    nominal = float(get_radio(prepared.mission.radio).nominal(p, prepared.radio_params))
+    obs = Observation(px, py, pz, hx, hy, mode, start[1:] > start[:-1],
+                      np.zeros(n, dtype=np.int64), knows, adj, np.zeros_like(adj), routed, spread,
+                      nominal, prepared.waypoints, start[:-1].copy(), start[1:].copy(),
+                      np.random.default_rng(seed), np.zeros(1, dtype=np.int64))
+    notified = math.inf if result.t_notify is None else result.t_notify
+    for k in range(len(traj.t)):
+        px[:n], py[:n] = traj.positions[k, :, 0], traj.positions[k, :, 1]
+        hx[:], hy[:] = np.cos(traj.headings[k]), np.sin(traj.headings[k])
+        mode[:], knows[:] = traj.mode[k], traj.knows[k]
+        adj[:] = _bits(traj.links[k])
+        routed[:] = _bits(np.append(traj.bs_route[k], [True, False]))  # the BS is node n
+        spread[:] = _bits(np.append(traj.knows[k], [traj.t[k] >= notified, False]))
+        yield k, obs
+
+
+def _bits(flags: np.ndarray) -> np.ndarray:
+    """Flags over the nodes (the last axis) as the kernel's bitsets: 64-bit words, node ``b``
+    at bit ``b % 64`` of word ``b // 64`` (the inverse of the trajectory's unpacking)."""
+    m = flags.shape[-1]
+    padded = np.zeros((*flags.shape[:-1], -(-m // 64) * 64), dtype=bool)
+    padded[..., :m] = flags
+    return np.packbits(padded, axis=-1, bitorder="little").view("<u8").astype(np.uint64)

@@ -10,10 +10,10 @@ import typer
 from rich.console import Console
 
 from sarlink.cli.errors import err_console, user_errors
-from sarlink.config import ConfigError
+from sarlink.config import ConfigError, Mission
 
 __all__ = ["console", "err_console", "output_folder", "plot_file",
-           "print_json", "user_errors"]
+           "print_json", "team_text", "user_errors"]
 
 console = Console()
 
@@ -59,3 +59,10 @@ def output_file(path: Path | None, option: str) -> Path | None:
 
 def print_json(data: dict[str, Any]) -> None:
     typer.echo(json.dumps(data, indent=2))
+
+
+def team_text(mission: Mission) -> str:
+    """The team for a title: ``8 drones``, or ``8 drones, 3 of them relays``."""
+    team = mission.team
+    relays = f", {team.relays} of them relay{'s' * (team.relays > 1)}" if team.relays else ""
+    return f"{team.drones} drones{relays}"

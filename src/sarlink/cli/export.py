@@ -9,7 +9,7 @@ import typer
 from rich.table import Table
 
 from sarlink.cli import options
-from sarlink.cli.common import console, output_folder, user_errors
+from sarlink.cli.common import console, output_folder, team_text, user_errors
 from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import ConfigError
 from sarlink.export import export_mission
@@ -41,13 +41,15 @@ def export(
                               firmware=firmware,  # type: ignore[arg-type]
                               seed=seed, run=run)
     label = get_planner(mission.team.planner).label
-    table = Table(title=f"{label}, {mission.team.drones} drones, {altitude:g} m above the BS, "
+    table = Table(title=f"{label}, {team_text(mission)}, {altitude:g} m above the BS, "
                         f"{firmware}: files in {folder}", title_justify="left")
     for name in ("drone", "flies", "length", "flight time", "files"):
         table.add_column(name, justify="right" if name in ("drone", "length") else "left")
     for d in team.drones:
         files = ", ".join(p.name for p in d.files) or "[dim]none: decides in flight[/]"
-        table.add_row(str(d.drone), "its route" if d.kind == "route" else "simulated track",
+        flies = {"route": "its route", "relay": "simulated track (relay)"}.get(
+            d.kind, "simulated track")
+        table.add_row(str(d.drone), flies,
                       f"{d.length / 1000:.2f} km", f"{d.flight_time / 60:.1f} min", files)
     console.print(table)
     console.print(f"team map: {team.geojson}", highlight=False)

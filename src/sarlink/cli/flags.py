@@ -33,6 +33,7 @@ from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_gr
 from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
 from sarlink.config.mission import Area, Channel, MtspSettings, Readings, Sensing, Team, Timing
+from sarlink.engine import relay_strategy_names
 from sarlink.planners import planner_names
 from sarlink.simulation import check_mission
 
@@ -118,6 +119,14 @@ FLAGS: tuple[Flag, ...] = _rows(
     ("--rc", float, "communication range r_c, m", "rc", {*ONE_RUN, "design", "export"}),
     ("--alpha", float, "ConCov coverage weight", "alpha", ONE_RUN),
     ("--nr", int, "mTSP-ConB: drones flying the plan", "nr", {*ONE_RUN, "export"}),
+    ("--relays", int, "relay drones among the N_m drones: the last ones, holding the "
+     "searchers' link to the BS (0: every drone searches)", "relays", {*ONE_RUN, "export"}),
+    ("--relay-strategy", str, f"where the relays stand: {', '.join(relay_strategy_names())}",
+     "relay_strategy", {*ONE_RUN, "export"}),
+    ("--relay-priority", str, "with fewer relays than the tree needs, whom they connect",
+     "relay_priority", {*ONE_RUN, "export"}),
+    ("--relay-estimate", str, "where the relays' tree puts a searcher the BS has not heard "
+     "since", "relay_estimate", {*ONE_RUN, "export"}),
     ("--td", float, "target duration t_d = horizon, s", "horizon", ONE_RUN),
     ("--size", float, "side a of the square area, m", "size", {"design", "plan"}),
     ("--r", float, "sensing range r (the mTSP cell side), m", "r",
@@ -198,7 +207,7 @@ class MissionFlags:
         params = {flag: value for flag, value in self.given if flag.param is not None}
         try:
             mission = base.replace(**{str(flag.param): value for flag, value in params.items()})
-            check_mission(mission)  # the planner and radio model by name, plug-ins loaded
+            check_mission(mission)  # planner, radio model, relay strategy by name, plug-ins loaded
             return mission
         except ConfigError as exc:
             raise ConfigError(_named(str(exc), params)) from None

@@ -39,7 +39,7 @@ def plugins(
         rows = data[f"{kind}s"]
         columns = list(rows[0]) if rows else ["name", "origin"]
         table = Table(*(registry.label if c == "name" else "from" if c == "origin" else c
-                        for c in columns), title=f"{registry.label}s ({registry.group})")
+                        for c in columns), title=f"{registry.plural} ({registry.group})")
         for row in rows:
             table.add_row(*("-" if row[c] is None else str(row[c]) for c in columns))
         console.print(table)

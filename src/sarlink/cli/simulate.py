@@ -11,7 +11,14 @@ import typer
 from rich.table import Table
 
 from sarlink.cli import options
-from sarlink.cli.common import console, output_file, plot_file, print_json, user_errors
+from sarlink.cli.common import (
+    console,
+    output_file,
+    plot_file,
+    print_json,
+    team_text,
+    user_errors,
+)
 from sarlink.cli.flags import MissionFlags, mission_flags
 from sarlink.config import Mission
 from sarlink.planners import get_planner
@@ -69,6 +76,7 @@ def simulate(
     out: dict[str, Any] = {
         "planner": mission.team.planner,
         "drones": mission.team.drones,
+        "relays": mission.team.relays,
         "rc": mission.channel.rc,
         "td": mission.timing.horizon,
         "seed": seed,
@@ -95,7 +103,7 @@ def simulate(
         print_json(out)
         return
     label = get_planner(mission.team.planner).label
-    table = Table(title=f"{label}: {mission.team.drones} drones, r_c = {mission.channel.rc:g} m, "
+    table = Table(title=f"{label}: {team_text(mission)}, r_c = {mission.channel.rc:g} m, "
                         f"t_d = {mission.timing.horizon:g} s (seed {seed}, run {run})")
     table.add_column("outcome")
     table.add_column("value", justify="right")

@@ -50,7 +50,11 @@ class EngineState(NamedTuple):
 def stepping_mission(mission: Mission) -> Prepared:
     """``mission`` prepared for stepping: its planner must steer every drone by a distributed
     rule (the agents take its decisions and follow its schedule), and its runs stop at the
-    BS's notification."""
+    BS's notification. Relays are refused: the agents are the drones and a relay takes no
+    direction."""
+    if mission.team.relays:
+        raise ConfigError(f"team.relays = {mission.team.relays}: sarlink.env steers every drone "
+                          "as a searcher and cannot take relays yet; allowed: team.relays = 0")
     planner = get_planner(mission.team.planner)
     steering = planner.steering(mission)
     if steering.rule is None or not steering.distributed(mission.team.drones).all():

@@ -8,7 +8,9 @@ drifts or is flown by hand meets the autopilot's breach action at the area's edg
 every no-fly zone; ``fence.waypoints`` holds the same fence for ArduPilot, which takes its
 fence apart from the mission. Distributed drones decide where to fly in the air, from what
 they sense and hear, so no file can hold their flight in advance: their simulated tracks of
-one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`).
+one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`). So do the
+relays' (``team.relays``): the BS chooses their points in the air, from what it hears of the
+searchers.
 """
 
 from __future__ import annotations
@@ -36,12 +38,15 @@ from sarlink.export.qgc import (
 from sarlink.planners import get_planner
 from sarlink.simulation import simulate
 
-__all__ = ["DISTRIBUTED_NOTE", "DroneExport", "TeamExport", "export_mission", "mission_fence",
-           "mission_frame"]
+__all__ = ["DISTRIBUTED_NOTE", "RELAY_NOTE", "DroneExport", "TeamExport", "export_mission",
+           "mission_fence", "mission_frame"]
 
 DISTRIBUTED_NOTE = ("run a distributed rule: they decide where to fly in the air, from what "
                     "they sense and hear, so no file can hold their flight in advance; their "
                     "simulated tracks of one run are in the GeoJSON, for the briefing")
+RELAY_NOTE = ("hold the searchers' link to the BS: the BS chooses their points in the air, "
+              "from what it hears of the searchers, so no file can hold their flight in "
+              "advance; their simulated tracks of one run are in the GeoJSON, for the briefing")
 
 TRACK_POINTS = 1000
 """About how many points of a simulated track the GeoJSON keeps (every k-th step)."""
@@ -53,7 +58,8 @@ class DroneExport:
 
     drone: int
     kind: str
-    """``route`` (upload files written) or ``distributed`` (a simulated track only)."""
+    """``route`` (upload files written), ``distributed`` or ``relay`` (a simulated track
+    only)."""
     length: float
     """Route length, or the simulated track's length, m."""
     flight_time: float
@@ -104,7 +110,7 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
     """Write the mission's upload files and its team GeoJSON into ``folder``.
 
     ``altitude`` is the flight height above the BS, m; ``seed`` and ``run`` choose the run
-    whose simulated tracks stand for the distributed drones.
+    whose simulated tracks stand for the distributed drones and the relays.
     """
     if not (math.isfinite(altitude) and altitude > 0):
         raise ConfigError(f"--altitude must be a height above the BS > 0 m, got {altitude:g}")
@@ -117,6 +123,7 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
     routes = list(steering.routes) + [np.empty((0, 2))] * (n - len(steering.routes))
     drones: list[DroneExport] = []
     paths: dict[int, tuple[str, np.ndarray]] = {}
+    searchers = n - mission.team.relays
     for i, route in enumerate(routes):
         if len(route) == 0:
             continue
@@ -140,21 +147,28 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
         notes.append(f"no fence.waypoints: a polygon of the area has {most} vertices and "
                      f"ArduPilot takes at most {ARDUPILOT_MAX_VERTICES}; simplify the area "
                      "to fence it on ArduPilot (the .plan files carry the whole fence)")
-    distributed = [i for i, r in enumerate(routes) if len(r) == 0]
-    if distributed:
+    distributed = [i for i, r in enumerate(routes[:searchers]) if len(r) == 0]
+    relays = list(range(searchers, n))
+    if distributed or relays:
         result = simulate(mission, seed=seed, run=run, trajectory=True)
         assert result.trajectory is not None
         tracks = result.trajectory.positions
         every = max(1, len(tracks) // TRACK_POINTS)
-        for i in distributed:
-            track = tracks[:, i]
-            length = _length(track)
-            track = np.vstack([track[::every], track[-1:]])
-            drones.append(DroneExport(i, "distributed", length, length / speed))
-            paths[i] = ("simulated track", track)
+        for kind, group in (("distributed", distributed), ("relay", relays)):
+            for i in group:
+                track = tracks[:, i]
+                length = _length(track)
+                track = np.vstack([track[::every], track[-1:]])
+                drones.append(DroneExport(i, kind, length, length / speed))
+                paths[i] = ("simulated track", track)
         label = get_planner(mission.team.planner).label
-        notes.append(f"{label}'s drones {', '.join(map(str, distributed))} {DISTRIBUTED_NOTE} "
-                     f"(seed {seed}, run {run})")
+        which = f"(seed {seed}, run {run})"
+        if distributed:
+            notes.append(f"{label}'s drones {', '.join(map(str, distributed))} "
+                         f"{DISTRIBUTED_NOTE} {which}")
+        if relays:
+            notes.append(f"the relays, drones {', '.join(map(str, relays))}, {RELAY_NOTE} "
+                         f"{which}")
     geojson = folder / "team.geojson"
     geojson.write_text(json.dumps(team_geojson(mission, frame, paths, speed), indent=1),
                        encoding="utf-8")

@@ -1,5 +1,6 @@
 """The team's mission on the map as one GeoJSON (RFC 7946): area, no-fly zones, BS, prior
-zones, and each drone's route (or simulated track) with its length and flight time."""
+zones, and each drone's route (or simulated track) with its task (searcher or relay), length
+and flight time."""
 
 from __future__ import annotations
 
@@ -37,7 +38,8 @@ def _feature(geometry: dict[str, Any], **props: Any) -> dict[str, Any]:
 def team_geojson(mission: Mission, frame: Frame, paths: dict[int, tuple[str, np.ndarray]],
                  speed: float) -> dict[str, Any]:
     """The FeatureCollection of a team's mission; ``paths[i]`` is drone ``i``'s kind and its
-    points in the mission's frame (from the BS)."""
+    points in the mission's frame (from the BS). A drone's ``task`` is ``relay`` for the
+    team's last ``team.relays`` drones, else ``searcher``."""
     region = mission.region
     area = area_polygon(region, mission.area.size)
     features = [_feature(_polygon(frame, Polygon(area.exterior)), role="area",
@@ -51,10 +53,13 @@ def team_geojson(mission: Mission, frame: Frame, paths: dict[int, tuple[str, np.
                      for z in region.zones]
     features.append(_feature({"type": "Point", "coordinates": [
         round(frame.anchor[0], 8), round(frame.anchor[1], 8)]}, role="BS"))
+    searchers = mission.team.drones - mission.team.relays
     for drone, (kind, points) in sorted(paths.items()):
         length = float(np.hypot(*np.diff(points, axis=0).T).sum()) if len(points) > 1 else 0.0
         features.append(_feature({"type": "LineString", "coordinates": _lonlat(frame, points)},
-                                 role=kind, drone=drone, length_m=round(length, 1),
+                                 role=kind, drone=drone,
+                                 task="relay" if drone >= searchers else "searcher",
+                                 length_m=round(length, 1),
                                  flight_time_s=round(length / speed, 1)))
     return {"type": "FeatureCollection", "name": f"sarlink: {mission.team.planner}, "
             f"{mission.team.drones} drones", "features": features}

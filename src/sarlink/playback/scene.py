@@ -17,8 +17,10 @@ __all__ = ["describe", "modes", "scene", "setting"]
 
 
 def setting(mission: Mission) -> str:
-    """Team size, range and the imperfections switched on, for titles."""
-    parts = [f"N = {mission.team.drones}", f"r_c = {mission.channel.rc:g} m"]
+    """Team size (and its relays), range and the imperfections switched on, for titles."""
+    team = mission.team
+    relays = f" ({team.relays} relay{'s' * (team.relays > 1)})" if team.relays else ""
+    parts = [f"N = {team.drones}{relays}", f"r_c = {mission.channel.rc:g} m"]
     if mission.channel.sigma > 0:
         parts.append(f"σ = {mission.channel.sigma:g} dB")
     if mission.sensing.p_miss > 0:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Circle
@@ -9,6 +11,7 @@ from matplotlib.ticker import MaxNLocator
 
 from sarlink.config import Mission
 from sarlink.engine.codes import Mode
+from sarlink.playback.scene import setting
 from sarlink.plots.area import draw_area
 from sarlink.result import RunResult
 
@@ -30,12 +33,12 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
     colors = plt.get_cmap("tab20")(np.linspace(0, 1, traj.positions.shape[1], endpoint=False))
     for i, color in enumerate(colors):
         ax.plot(traj.positions[:, i, 0], traj.positions[:, i, 1], lw=0.7, color=color, alpha=0.8)
-    reporting = traj.mode == Mode.REPORTING
-    reporters = np.flatnonzero(reporting.any(axis=0))
-    for k, drone in enumerate(reporters):  # on_detect = report: the legs to the BS
-        legs = np.where(reporting[:, drone], traj.positions[:, drone].T, np.nan)
-        ax.plot(legs[0], legs[1], lw=2.2, color="black", alpha=0.7,
-                label="flying to tell the BS" if k == 0 else None)
+    _legs(ax, result, Mode.REPORTING, "flying to tell the BS", color="black", alpha=0.7)
+    held = _legs(ax, result, Mode.RELAYING, "relays, holding the link", color="tab:olive",
+                 ls=(0, (4, 1.5)), alpha=0.9)
+    if held.size:  # where each relay stood last while relaying
+        ax.plot(held[:, 0], held[:, 1], marker="D", ms=8, mfc="tab:olive", mec="black",
+                ls="none")
     ax.plot(bx, by, marker="^", ms=12, color="tab:blue", ls="none", label="base station")
     ax.plot(tx, ty, marker="X", ms=11, color="tab:red", ls="none", label="target")
     if result.t_detect is not None and result.detector is not None:
@@ -54,12 +57,26 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         t, (x, y), distance = farthest
         ax.plot(x, y, marker="o", ms=10, mfc="none", mec="tab:purple", mew=2, ls="none",
                 label=f"farthest connected drone: {distance:.0f} m at t = {t:g} s")
-    label = mission.team.planner
     ax.set(xlabel="x (m)", ylabel="y (m)",
-           title=f"{label}, N = {mission.team.drones}, r_c = {mission.channel.rc:g} m, "
-                 f"seed {result.seed}, run {result.run}")
+           title=f"{mission.team.planner}, {setting(mission)}, seed {result.seed}, "
+                 f"run {result.run}")
     ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
     return ax
+
+
+def _legs(ax: plt.Axes, result: RunResult, mode: Mode, label: str, **style: Any
+          ) -> np.ndarray:
+    """Draw, bold over the tracks, every drone's legs in ``mode`` (one legend entry); return
+    where each such drone was last in it, ``(drones, 2)``."""
+    traj = result.trajectory
+    assert traj is not None
+    within = traj.mode == mode
+    drones = np.flatnonzero(within.any(axis=0))
+    for k, drone in enumerate(drones):
+        legs = np.where(within[:, drone], traj.positions[:, drone].T, np.nan)
+        ax.plot(legs[0], legs[1], lw=2.2, label=label if k == 0 else None, **style)
+    last = len(within) - 1 - np.argmax(within[::-1, drones], axis=0)
+    return traj.positions[last, drones]
 
 
 def _farthest_drone(result: RunResult, bs: tuple[float, float]
