@@ -307,8 +307,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         itself and the searchers in the air (neither relaying nor landed: those flying home
         too) where it believes them (``team.relay_estimate``: where last heard, or reckoned)
         from where it last heard its relays; a relay it reaches takes its point (into the
-        area: one it does not keeps its aim); a relay whose budget is due turns home, the
-        others head straight for their aim."""
+        area), one it does not heads back to the BS; a relay whose budget is due turns home,
+        the others head straight for their aim."""
         for i in range(n):
             if k == 0 or i in routed:
                 heard[i] = (pos[i][0], pos[i][1], heading[i], k, wp_next[i])
@@ -327,8 +327,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         for i in range(n):
             if mode[i] != "relaying":
                 continue
-            if i in routed:
-                aim[i] = clamp(points[i])
+            aim[i] = clamp(points[i]) if i in routed else bs
             home = _dist(pos[i], bs)
             if (mission.team.flight_time - t) - home / v < 2 * dt:
                 mode[i] = "returning"

@@ -57,6 +57,28 @@ def test_no_relay_leaves_the_area_or_enters_a_hole(area: Mission | None, planner
     assert np.allclose(pos[-1], flown.area.bs_xy)
 
 
+@pytest.mark.parametrize("planner", ["covb", "mtsp"])
+def test_a_relay_out_of_the_bs_reach_flies_back_to_it(planner: str) -> None:
+    """k-bottleneck spreads three relays along the tree's longest edges, which they cannot
+    hold at r_c = 500 m, so they fly out of the BS's reach: at every such step a relay (in
+    the square: straight) closes on the BS by V dt, and never holds still out of contact,
+    where the BS could give it no other point."""
+    mission = Mission.build(planner=planner, drones=8, relays=3, rc=500.0, horizon=1000.0,
+                            relay_priority="k-bottleneck", mtsp_plan="shared",
+                            iterations=200)
+    step = mission.team.speed * mission.timing.dt
+    out = 0
+    for run in range(4):
+        traj = simulate(mission, seed=7, run=run, trajectory=True).trajectory
+        assert traj is not None
+        home = np.hypot(*(traj.positions[:, 5:] - mission.area.bs_xy).transpose(2, 0, 1))
+        cut = (traj.mode[:-1, 5:] == Mode.RELAYING) & ~traj.bs_route[:-1, 5:]
+        out += int(cut.sum())
+        closer = np.maximum(home[:-1] - step, 0.0)
+        np.testing.assert_allclose(home[1:][cut], closer[cut], rtol=0.0, atol=1e-6)
+    assert out > 0
+
+
 def _heard(n: int) -> Observation:
     """What :func:`reckon` reads of ``n`` searching distributed drones (no routes)."""
     m = n + 2

@@ -32,9 +32,11 @@ def steer(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx: n
           gy: np.ndarray, aim_x: np.ndarray, aim_y: np.ndarray, nhx: np.ndarray,
           nhy: np.ndarray, edges: np.ndarray, nav: np.ndarray) -> None:
     """Every relay at step ``k``: a relay the BS reaches takes the strategy's point ``(gx,
-    gy)`` (moved into the area; a point that is not finite is ignored) as its aim; one whose
-    budget is due turns home (the flight home round the holes on a polygon area); the others
-    head for their aim, the shortest way round the holes, and hold it once there
+    gy)`` (moved into the area; a point that is not finite is ignored) as its aim; one it
+    does not reach aims at the BS until it does again (a relay that kept its aim out of
+    contact would be stranded there: the BS could give it no other point); one whose budget
+    is due turns home (the flight home round the holes on a polygon area); the others head
+    for their aim, the shortest way round the holes, and hold it once there
     (:func:`sarlink.engine.motion.move`)."""
     step = p.speed * p.dt
     t = k * p.dt
@@ -42,7 +44,9 @@ def steer(k: int, homing: bool, p: Params, px: np.ndarray, py: np.ndarray, hx: n
     for i in range(mode.shape[0]):
         if mode[i] != RELAYING:
             continue
-        if has(routed, i) and math.isfinite(gx[i]) and math.isfinite(gy[i]):
+        if not has(routed, i):
+            aim_x[i], aim_y[i] = p.bs_x, p.bs_y
+        elif math.isfinite(gx[i]) and math.isfinite(gy[i]):
             aim_x[i], aim_y[i] = into_area(gx[i], gy[i], p.size, edges)
         if homing:
             if polygon:
