@@ -488,8 +488,6 @@ def test_relays_are_written_as_their_simulated_tracks(tmp_path: Path, valley: Mi
         assert np.hypot(x - expected[:, 0], y - expected[:, 1]).max() < 0.01  # m
         assert np.hypot(x - x[0], y - y[0]).max() > mission.channel.rc / 2  # it left the BS
         assert area.buffer(0.01).covers(MultiPoint(np.column_stack([x, y])))
-        assert tracks[i]["properties"]["length_m"] == pytest.approx(out.drones[i].length,
-                                                                    abs=0.1)
 
 
 def test_missions_off_the_map_cannot_be_exported(tmp_path: Path) -> None:

@@ -1,8 +1,8 @@
-"""The planner registry, and the contracts every registered planner, rule and radio model
-keeps (sarlink.testing).
+"""The planner registry, and the contracts every registered planner, rule, radio model and
+relay strategy keeps (sarlink.testing).
 
-Nothing here lists them: a planner, rule or radio model added to sarlink or installed as a
-plug-in is checked by the same tests, the way VMAS tests every scenario.
+Nothing here lists them: a planner, rule, radio model or relay strategy added to sarlink or
+installed as a plug-in is checked by the same tests, the way VMAS tests every scenario.
 """
 
 from __future__ import annotations
@@ -12,8 +12,15 @@ import pytest
 
 from sarlink import ConfigError, Mission, RoutePlanner, get_planner, planner_names, simulate
 from sarlink.engine.radios import radio_names
+from sarlink.engine.relays import relay_strategy_names
 from sarlink.planners import PAPER_PLANNERS, registry
-from sarlink.testing import check_planner, check_radio, check_rule, check_run
+from sarlink.testing import (
+    check_planner,
+    check_radio,
+    check_relay_strategy,
+    check_rule,
+    check_run,
+)
 
 
 def test_the_paper_planners_come_first_in_the_order_of_its_legends() -> None:
@@ -95,6 +102,11 @@ RADIOS = [(name, channel) for name in radio_names() for channel in CHANNELS
 @pytest.mark.parametrize(("name", "channel"), RADIOS)
 def test_every_registered_radio_model_keeps_the_contract(name: str, channel: dict) -> None:
     check_radio(name, **channel)
+
+
+@pytest.mark.parametrize("name", relay_strategy_names())
+def test_every_registered_relay_strategy_keeps_the_contract(name: str) -> None:
+    check_relay_strategy(name, runs=1, horizon=900.0, rc=500.0)
 
 
 @pytest.mark.usefixtures("fresh_registries")

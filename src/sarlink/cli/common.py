@@ -62,7 +62,7 @@ def print_json(data: dict[str, Any]) -> None:
 
 
 def team_text(mission: Mission) -> str:
-    """The team for a title: ``8 drones``, or ``8 drones, 3 of them relays``."""
-    team = mission.team
-    relays = f", {team.relays} of them relay{'s' * (team.relays > 1)}" if team.relays else ""
-    return f"{team.drones} drones{relays}"
+    """The team for a title: ``8 drones``, ``8 drones, 3 of them relays``."""
+    k = mission.team.relays
+    relays = "" if k == 0 else ", one of them a relay" if k == 1 else f", {k} of them relays"
+    return f"{mission.team.drones} drones{relays}"

@@ -38,8 +38,9 @@ def plugins(
     for kind, registry in KINDS.items():
         rows = data[f"{kind}s"]
         columns = list(rows[0]) if rows else ["name", "origin"]
+        title = f"{registry.plural} ({registry.group})"
         table = Table(*(registry.label if c == "name" else "from" if c == "origin" else c
-                        for c in columns), title=f"{registry.plural} ({registry.group})")
+                        for c in columns), title=title, min_width=len(title))
         for row in rows:
             table.add_row(*("-" if row[c] is None else str(row[c]) for c in columns))
         console.print(table)
