@@ -35,6 +35,7 @@ from sarlink.paper.experiments import (
     PLAN_TIME_PLANNERS,
     RANGES,
     RELAY_PLANNER,
+    RELAY_TDS,
     TD_LONG,
     mtsp_plans,
     plan_time_missions,
@@ -119,6 +120,19 @@ def test_the_range_figure_agrees_with_the_flown_ranges(quick: ReproductionResult
     assert set(curve[curve["planner"] == "mtsp-conb"]["drones"]) == {4}  # N_m <= N_r = 6
     assert curve.groupby(["planner", "drones", "td"])["P_s"].apply(
         lambda p: bool((np.diff(p.to_numpy()) >= 0).all())).all()  # more range, no less P_s
+
+
+def test_the_quick_relay_sweep_flies_a_quarter_of_the_runs_and_its_tables_are_theirs(
+        quick: ReproductionResult) -> None:
+    """``--quick`` at 10 runs per point flies the first 3 of the relays' (a quarter, rounded
+    up); the stored table is their summary, and the report compares them over those runs."""
+    runs = load_runs(quick.out, "relays")
+    assert sorted(set(runs["run"])) == [0, 1, 2]
+    assert len(runs) == 3 * len(EXPERIMENTS["relays"].build(1).points())
+    recomputed = summarize(runs, td=list(RELAY_TDS), by=["planner", "drones", "rc", "relays"])
+    pd.testing.assert_frame_equal(pd.read_parquet(quick.out / "tables" / "relays.parquet"),
+                                  recomputed)
+    assert "over 3 runs per point, paired run by run" in quick.report_md.read_text()
 
 
 def _report_table(md: str, heading: str) -> list[list[str]]:

@@ -8,16 +8,17 @@ whose flights it shares between its three ranges anyway: Fig. :data:`RANGE_FIG` 
 every range from 100 m to 3000 m from them. Fig. 7a (imperfect sensing) and Fig. 7b
 (shadowing) change the mission itself and need sweeps of their own; they plot only detection
 (7a) or notification (7b), so their runs stop at that event, which makes them several times
-faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND` and :data:`OTHERS`: drones
-that report, the other planners), which show P_s, mission time and search share, all settled
-at notification: their runs stop there, and their tables have no reachability or connected
-fraction past a run's stop (NaN). Fig. 1 times the planners rather than simulating missions.
-Every experiment uses the one seed :data:`SEED`. The paper's figures fly the paper's five
-planners (:data:`PAPER_PLANNERS`); every other registered planner
-(:func:`sarlink.planner_names`: the IAMSAR search patterns, and any planner registered since)
-is flown over the main grid, with and without drones that report, by the ``beyond``
-experiment, read when it is built, so that a newly registered planner is compared with the
-paper's without edits here.
+faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND`, :data:`OTHERS` and
+:data:`RELAY_FIG`: drones that report, the other planners, searchers and relays), which show
+P_s, mission time and search share, all settled at notification: their runs stop there, and
+their tables have no reachability or connected fraction past a run's stop (NaN). Fig. 1
+times the planners rather than simulating missions. Every experiment uses the one seed
+:data:`SEED`. The paper's figures fly the paper's five planners (:data:`PAPER_PLANNERS`);
+every other registered planner (:func:`sarlink.planner_names`: the IAMSAR search patterns,
+and any planner registered since) is flown over the main grid, with and without drones that
+report, by the ``beyond`` experiment, read when it is built, so that a newly registered
+planner is compared with the paper's without edits here; Fig. :data:`RELAY_FIG` flies CovB
+searchers with relays (:data:`RELAY_PLANNER`, :data:`RELAY_COUNTS`).
 """
 
 from __future__ import annotations

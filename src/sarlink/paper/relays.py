@@ -100,7 +100,7 @@ def relays_text(points: Sequence[RelayPoint]) -> list[str]:
     for k in sorted({p.relays for p in points}):
         mine = [p for p in points if p.relays == k]
         up, down = _tally([p.gain for p in mine])
-        top = max(mine, key=lambda p: p.gain.value)
+        top = max(mine, key=lambda p: (p.gain.value, p.gain.lo))
         low = min(mine, key=lambda p: p.gain.value)
         raised, lowered = _tally([p.alone for p in mine])
         lines.append(

@@ -375,7 +375,7 @@ def _relays(tables: dict[str, pd.DataFrame]) -> list[_Block]:
     points = relay_points(tables["main_runs"], tables["relays_runs"])
     runs = tables["relays_runs"]["run"].nunique()
     searcher = get_planner(RELAY_PLANNER).label
-    counts = ", ".join(map(str, RELAY_COUNTS))
+    counts = f"{', '.join(map(str, RELAY_COUNTS[:-1]))} or {RELAY_COUNTS[-1]}"
     return [_Heading("Beyond the paper: how many drones should hold the link?", 2), _Para(
         "The paper ends on it: \"our future work will focus on determining the optimum "
         "allocation of resources to different tasks of the mission\". Here a team of N_m "
