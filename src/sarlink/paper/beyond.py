@@ -19,13 +19,18 @@ from sarlink.paper.evidence import Estimate, Grid
 from sarlink.paper.experiments import DRONES, RANGES, TD_FIG3, TD_SHORT
 from sarlink.planners import get_planner
 
-__all__ = ["Gain", "beyond_text", "gains", "others_text"]
+__all__ = ["Gain", "beyond_text", "gains", "others_text", "where"]
 
 TDS = (TD_SHORT, TD_FIG3)
 """The target durations compared: where success is not yet certain for most planners."""
 _KEYS = ["planner", "drones", "rc", "td"]
 _POINTS = [(n, rc, td) for n in DRONES for rc in RANGES for td in TDS]
 """The grid points compared: every team size and range, at each of :data:`TDS`."""
+
+
+def where(drones: int, rc: float, td: float) -> str:
+    """A grid point and target duration as the report's sentences name them."""
+    return f"N_m = {drones}, r_c = {rc:g} m, t_d = {td:g} s"
 
 
 @dataclass(frozen=True)
@@ -39,7 +44,7 @@ class Gain:
     gain: Estimate
 
     def where(self) -> str:
-        return f"N_m = {self.drones}, r_c = {self.rc:g} m, t_d = {self.td:g} s"
+        return where(self.drones, self.rc, self.td)
 
 
 def _points(planners: Sequence[str]) -> list[tuple[str, int, float, float]]:

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import pandas as pd
 
+from sarlink.paper.beyond import where
 from sarlink.paper.evidence import Estimate
 from sarlink.paper.experiments import RELAY_PLANNER, RELAY_TDS, relay_label
 from sarlink.paper.paired import RunGrid
@@ -48,7 +49,7 @@ class RelayPoint:
     """``mine`` minus P_s of the searchers' planner with every drone searching, paired."""
 
     def where(self) -> str:
-        return f"N_m = {self.drones}, r_c = {self.rc:g} m, t_d = {self.td:g} s"
+        return where(self.drones, self.rc, self.td)
 
 
 def relay_points(main_runs: pd.DataFrame, relays_runs: pd.DataFrame,
