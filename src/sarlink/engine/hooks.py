@@ -37,7 +37,7 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from sarlink.config import ConfigError
 
@@ -71,8 +71,26 @@ def check_hook(kind: str, name: str, hook: str, fn: Any, arity: int) -> None:
                           f"compiled kernels can import it; {py.__qualname__} is not")
 
 
+class _OptionalHooks:
+    """A plug-in whose hooks (``_HOOKS``: name -> arity) may be ``None``, the engine's
+    default: each given one is checked on construction."""
+
+    _KIND: ClassVar[str]
+    _HOOKS: ClassVar[dict[str, int]]
+
+    def __post_init__(self) -> None:
+        for hook, arity in self._HOOKS.items():
+            fn = getattr(self, hook)
+            if fn is not None:
+                check_hook(self._KIND, getattr(self, "name"), hook, fn, arity)  # noqa: B009
+
+    def hooks(self) -> dict[str, Callable[..., Any] | None]:
+        """The hook functions by name (``None``: the engine's default)."""
+        return {hook: getattr(self, hook) for hook in self._HOOKS}
+
+
 @dataclass(frozen=True)
-class DistributedRule:
+class DistributedRule(_OptionalHooks):
     """A direction-update rule for the drones that do not fly routes.
 
     ``near`` asks the engine to fill ``obs.near`` (pairs within the sensing range) on the
@@ -97,15 +115,8 @@ class DistributedRule:
     range_free: bool = False
     ignores_reporting: bool = False
 
-    def __post_init__(self) -> None:
-        for hook, arity in _RULE_HOOKS.items():
-            fn = getattr(self, hook)
-            if fn is not None:
-                check_hook("rule", self.name, hook, fn, arity)
-
-    def hooks(self) -> dict[str, Callable[..., Any] | None]:
-        """The hook functions by name (``None``: the engine's default)."""
-        return {hook: getattr(self, hook) for hook in _RULE_HOOKS}
+    _KIND: ClassVar[str] = "rule"
+    _HOOKS: ClassVar[dict[str, int]] = _RULE_HOOKS
 
 
 @dataclass(frozen=True)
@@ -144,7 +155,7 @@ class RadioModel:
 
 
 @dataclass(frozen=True)
-class RelayStrategy:
+class RelayStrategy(_OptionalHooks):
     """Where a team's relay drones stand (``team.relays``, docs/model.md, Relays): their
     points, chosen at the BS from what it knows of the searchers. Its hooks are compiled
     into the kernel of a team with relays only: a team without flies the kernel without them.
@@ -154,15 +165,8 @@ class RelayStrategy:
     place: Callable[..., Any]
     prepare: Callable[..., Any] | None = None
 
-    def __post_init__(self) -> None:
-        for hook, arity in _RELAY_HOOKS.items():
-            fn = getattr(self, hook)
-            if fn is not None:
-                check_hook("relay strategy", self.name, hook, fn, arity)
-
-    def hooks(self) -> dict[str, Callable[..., Any] | None]:
-        """The hook functions by name (``None``: the engine's default)."""
-        return {hook: getattr(self, hook) for hook in _RELAY_HOOKS}
+    _KIND: ClassVar[str] = "relay strategy"
+    _HOOKS: ClassVar[dict[str, int]] = _RELAY_HOOKS
 
 
 def radio_identity(radio: RadioModel) -> tuple[object, ...]:
