@@ -141,7 +141,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     mode = ["search"] * searchers + ["relaying"] * (n - searchers)
     aim = list(pos)  # the point each relay flies to and holds
     points = list(pos)  # the point the BS last planned for each relay
-    heard: list[tuple[float, float, float, int, int]] = []  # x, y, heading, step, next waypoint
+    heard: list[tuple[float, float, float, int, int, str]] = []  # x, y, heading, step, waypoint, mode
     knows = [False] * n
     in_range = [False] * n
     pass_start = [0.0] * n
@@ -281,9 +281,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
 
     def reckoned(i: int, k: int) -> tuple[float, float]:
         """Where the BS believes drone ``i`` at step ``k``, by dead reckoning from when it
-        last heard it: on along its route at V_m if it flies one, straight home if it flies
-        home, else on along the heading it was heard with (into the area)."""
-        x, y, h, when, w = heard[i]
+        last heard it: on along its route at V_m if it flies one, straight home if it was
+        flying home then, else on along the heading it was heard with (into the area)."""
+        x, y, h, when, w, was = heard[i]
         travel = v * dt * (k - when)
         if travel <= 0:
             return x, y
@@ -294,7 +294,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                     return x + travel * (wx - x) / d, y + travel * (wy - y) / d
                 x, y, travel = wx, wy, travel - d
             return x, y
-        if mode[i] == "returning":
+        if was == "returning":
             d = length(bs[0] - x, bs[1] - y)
             if d <= travel:
                 return bs
@@ -304,16 +304,16 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     def hold_the_link(k: int, t: float, routed: set[int], new: list[float]) -> None:
         """The relays' part of step ``k``'s decisions: the BS hears every drone with a route
         to it (everyone at take-off); every t_s it plans a point for each relay, the tree over
-        itself and the searchers in the air (neither relaying nor landed: those flying home
+        itself and the searchers (the first N - K drones) not heard landed (those flying home
         too) where it believes them (``team.relay_estimate``: where last heard, or reckoned)
         from where it last heard its relays; a relay it reaches takes its point (into the
         area), one it does not heads back to the BS; a relay whose budget is due turns home,
         the others head straight for their aim."""
         for i in range(n):
             if k == 0 or i in routed:
-                heard[i] = (pos[i][0], pos[i][1], heading[i], k, wp_next[i])
+                heard[i] = (pos[i][0], pos[i][1], heading[i], k, wp_next[i], mode[i])
         if k % round(ts / dt) == 0:
-            airborne = [i for i in range(n) if mode[i] not in ("relaying", "landed")]
+            airborne = [i for i in range(searchers) if heard[i][5] != "landed"]
             holding = [i for i in range(n) if mode[i] == "relaying"]
             where = [bs, *(heard[i][:2] if mission.team.relay_estimate == "heard"
                            else reckoned(i, k) for i in airborne)]
@@ -335,7 +335,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             elif aim[i] != pos[i]:
                 new[i] = math.atan2(aim[i][1] - pos[i][1], aim[i][0] - pos[i][0])
 
-    heard = [(bs[0], bs[1], heading[i], 0, 0) for i in range(n)]
+    heard = [(bs[0], bs[1], heading[i], 0, 0, mode[i]) for i in range(n)]
     for k in range(steps + 1):
         t = k * dt
         # observe

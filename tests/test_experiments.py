@@ -296,6 +296,8 @@ def test_a_sweep_over_the_relay_count_stores_it_beside_the_runs(tmp_path: Path) 
     folders = {mission_hash(m): p["relays"] for p, m in Experiment.from_toml(path).points()}
     assert {p.name for p in (tmp_path / "out" / "points").iterdir()} == folders.keys()
     assert folders["bfea8fbdf2ba1fa9"] == 0  # the hash computed by sarlink before relays
+    table = runner.invoke(app, ["summarize", str(tmp_path / "out")])
+    assert "relays=3 (2 runs)" in table.stdout, table.stdout  # counts, not 3.0 (2.0 runs)
 
 
 def test_an_unknown_relay_strategy_is_refused_before_a_sweep_starts(tmp_path: Path) -> None:

@@ -5,6 +5,8 @@ tests/test_reference.py; where they stand: tests/test_relay_placement.py."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 import shapely
@@ -102,13 +104,32 @@ def test_dead_reckoning_keeps_to_a_polygon_area_wherever_it_lies() -> None:
                    "holes": [[(500, 500), (1500, 500), (1500, 1500), (500, 1500)]]}})
     prepared = prepare(mission)
     p, edges = prepared.params, prepared.edges
-    # x, y, heading x and y, the step and next waypoint of each hearing
+    # x, y, heading x and y, the step, next waypoint, mode and route flag of each hearing
     heard = np.array([[-2000.0, 400.0], [-1000.0, 1000.0], [-1.0, 1.0], [0.0, 0.0],
-                      [0.0, 0.0], [0.0, 0.0]])
+                      [0.0, 0.0], [0.0, 0.0], [Mode.SEARCHING] * 2, [0.0, 0.0]])
     obs = _heard(2)
     assert reckon(10, p, obs, heard, 0, edges) == (-2050.0, -1000.0)
     x, y = reckon(40, p, obs, heard, 1, edges)  # 600 m east: 100 m into the hole
     assert 500.0 - 1e-2 < x < 500.0 and y == 1000.0 and contains(x, y, edges)
+
+
+@pytest.mark.parametrize("now", [Mode.REPORTING, Mode.RETURNING, Mode.LANDED],
+                         ids=lambda m: m.name.lower())
+def test_dead_reckoning_reads_what_the_bs_heard_not_what_the_drone_does_now(now: Mode) -> None:
+    """A searcher heard searching, flying east, is reckoned on east whatever it has done since
+    out of the BS's hearing (found the target and turned home, or landed); one heard flying
+    home is reckoned on its way home."""
+    prepared = prepare(Mission.build(drones=3, relays=1))
+    p, edges = prepared.params, prepared.edges
+    heard = np.array([[1000.0, 1000.0], [1000.0, 1000.0], [1.0, 1.0], [0.0, 0.0],
+                      [0.0, 0.0], [0.0, 0.0], [Mode.SEARCHING, Mode.RETURNING], [0.0, 0.0]])
+    obs = _heard(2)
+    obs.mode[:] = now
+    step = p.speed * p.dt
+    assert reckon(10, p, obs, heard, 0, edges) == (1000.0 + 10 * step, 1000.0)
+    x, y = reckon(10, p, obs, heard, 1, edges)
+    home = math.dist((1000.0, 1000.0), (p.bs_x, p.bs_y))
+    assert math.dist((x, y), (p.bs_x, p.bs_y)) == pytest.approx(home - 10 * step)
 
 
 @pytest.mark.parametrize(("relays", "message"), [

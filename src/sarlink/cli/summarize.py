@@ -37,9 +37,9 @@ def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
 
     for start in range(0, len(table), per_group):
         rows = table.iloc[start:start + per_group]
-        first = rows.iloc[0]
-        point = ", ".join(f"{name}={first[name]}" for name in by) or "all runs"
-        out = Table(title=f"{point} ({first['runs']} runs)", title_justify="left")
+        # a column's own first value: a row of an all-numeric frame would turn counts to floats
+        point = ", ".join(f"{name}={rows[name].iloc[0]}" for name in by) or "all runs"
+        out = Table(title=f"{point} ({rows['runs'].iloc[0]} runs)", title_justify="left")
         out.add_column("measure")
         for td in rows["td"]:
             out.add_column(f"t_d = {td:g} s", justify="right")
