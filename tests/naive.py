@@ -141,7 +141,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     mode = ["search"] * searchers + ["relaying"] * (n - searchers)
     aim = list(pos)  # the point each relay flies to and holds
     points = list(pos)  # the point the BS last planned for each relay
-    heard: list[tuple[float, float, float, int, int, str]] = []  # x, y, heading, step, waypoint, mode
+    # x, y, heading, step, next waypoint and mode of each drone when the BS last heard it
+    heard: list[tuple[float, float, float, int, int, str]] = []
     knows = [False] * n
     in_range = [False] * n
     pass_start = [0.0] * n

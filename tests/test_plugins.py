@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from numba.core.errors import TypingError
 
 from sarlink import (
     ConfigError,
@@ -38,6 +39,7 @@ from sarlink.engine.radios import DISC, lognormal
 from sarlink.engine.streams import run_streams
 from sarlink.planners import registry, rules
 from sarlink.registry import KINDS, adopt_plugins, plugins_in_code
+from sarlink.simulation import prepare
 from sarlink.testing import check_relay_strategy, check_rule
 
 PLUGINS = Path(__file__).parent / "plugins"
@@ -291,13 +293,31 @@ def test_a_hook_with_the_wrong_signature_is_refused_when_the_rule_is_made() -> N
         DistributedRule("local", local)
 
 
-def test_a_hook_that_does_not_compile_is_one_line_naming_the_rule() -> None:
+def test_a_hook_that_does_not_compile_is_one_line_naming_the_plug_ins() -> None:
     register_planner(RulePlanner("untyped", "Untyped", DistributedRule("untyped",
                                                                        bad.decide_untyped)))
-    with pytest.raises(ConfigError, match="the kernel for rule 'untyped' and radio model 'disc' "
+    with pytest.raises(ConfigError, match="the kernel for rule 'untyped', radio model 'disc' "
                        "does not compile") as info:
         simulate(Mission.build(planner="untyped", drones=2, horizon=100.0))
     assert "no_such_field" in str(info.value)
+
+
+
+def test_a_relay_kernel_that_does_not_compile_names_the_relay_strategy(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The kernel's typing error, as Numba raises it (faked: typing the relay kernel for real
+    takes minutes), becomes one line naming the rule, the radio model and the strategy."""
+    register_relay_strategy(RelayStrategy("untyped", bad.decide_untyped))
+    prepared = prepare(Mission.build(drones=2, relays=1, relay_strategy="untyped"))
+
+    def kernel(*args: Any) -> None:
+        raise TypingError("Unknown attribute 'no_such_field' of type Observation")
+
+    kernel.signatures = []  # type: ignore[attr-defined]  # not compiled yet, as Numba's
+    monkeypatch.setattr(type(prepared), "kernel", property(lambda self: kernel))
+    with pytest.raises(ConfigError, match=r"the kernel for rule 'covb', radio model 'disc', "
+                       r"relay strategy 'untyped' does not compile .*no_such_field"):
+        prepared.run(0, 0)
 
 
 @pytest.mark.parametrize(("routes", "message"), [

@@ -181,10 +181,12 @@ class Prepared:
             return kernel(*args)
         except NumbaError as exc:
             rule = self.steering.rule.name if self.steering.rule else "(routes only)"
+            relays = (f", relay strategy {self.mission.team.relay_strategy!r}"
+                      if self.mission.team.relays else "")
             detail = next((line.strip() for line in str(exc).splitlines() if line.strip()
                            and not line.startswith(("Failed in", "During:", "-"))), str(exc))
-            raise ConfigError(f"the kernel for rule {rule!r} and radio model "
-                              f"{self.mission.radio!r} does not compile (a plug-in's hook "
+            raise ConfigError(f"the kernel for rule {rule!r}, radio model "
+                              f"{self.mission.radio!r}{relays} does not compile (a plug-in's hook "
                               f"does not fit the engine's types, docs/plugins.md): "
                               f"{detail}") from exc
 

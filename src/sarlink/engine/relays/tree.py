@@ -70,7 +70,7 @@ def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int, edges
             x, y, travel = wx, wy, travel - d
             w += 1
         return x, y
-    if mode == RETURNING or mode == REPORTING:
+    if mode in (RETURNING, REPORTING):
         d = dist(x, y, p.bs_x, p.bs_y)
         if d <= travel:
             return p.bs_x, p.bs_y
