@@ -24,7 +24,7 @@ from sarlink.engine.motion import (
     report,
     schedule,
 )
-from sarlink.engine.params import LANDED, REPORTING, RETURNING, SEARCHING
+from sarlink.engine.params import LANDED, RELAYING, REPORTING, RETURNING, SEARCHING
 
 SIZE = 4000.0
 STEP = 5.0  # V dt of the default mission
@@ -257,24 +257,30 @@ def test_every_kind_of_drone_moves_as_the_model_says() -> None:
     """One step of V dt = 5 m: 0 searching moves along its heading; 1 landed stays; 2
     returning exactly 5 m from the BS lands on it; 3 returning farther moves on; 4 reporting
     4.5 m from the BS waits on it; 5 on its route rejoins its tour 3 m away and flies the 2 m left
-    towards its next waypoint; 6 on its route, 8 m from where it left, flies 5 m back."""
-    px = np.array([100.0, 2000.0, 2005.0, 2100.0, 1995.5, 500.0, 600.0])
-    py = np.array([100.0, 2000.0, 2000.0, 2000.0, 2000.0, 500.0, 600.0])
-    hx = np.array([0.6, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0])
-    hy = np.array([0.8, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
-    mode = _modes([SEARCHING, LANDED, RETURNING, RETURNING, REPORTING, SEARCHING, SEARCHING])
-    on_route = np.array([False] * 5 + [True, True])
+    towards its next waypoint; 6 on its route, 8 m from where it left, flies 5 m back; 7 a
+    relay 3 m from its aim holds it; 8 a relay 20 m from its aim flies 5 m towards it."""
+    px = np.array([100.0, 2000.0, 2005.0, 2100.0, 1995.5, 500.0, 600.0, 800.0, 900.0])
+    py = np.array([100.0, 2000.0, 2000.0, 2000.0, 2000.0, 500.0, 600.0, 800.0, 900.0])
+    hx = np.array([0.6, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0, 0.0])
+    hy = np.array([0.8, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0])
+    mode = _modes([SEARCHING, LANDED, RETURNING, RETURNING, REPORTING, SEARCHING, SEARCHING,
+                   RELAYING, RELAYING])
+    on_route = np.array([False] * 5 + [True, True] + [False] * 2)
     wp = np.array([[503.0, 600.0], [700.0, 700.0]])
-    wp_next, wp_end = np.array([0, 0, 0, 0, 0, 0, 1]), np.array([0, 0, 0, 0, 0, 1, 2])
-    leave_x, leave_y = np.array([0.0] * 5 + [503.0, 600.0]), np.array([0.0] * 5 + [500.0,
-                                                                                   608.0])
-    rejoin = np.array([False] * 5 + [True, True])
-    move(P, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y, rejoin)
+    wp_next = np.array([0, 0, 0, 0, 0, 0, 1, 0, 0])
+    wp_end = np.array([0, 0, 0, 0, 0, 1, 2, 0, 0])
+    leave_x = np.array([0.0] * 5 + [503.0, 600.0] + [0.0] * 2)
+    leave_y = np.array([0.0] * 5 + [500.0, 608.0] + [0.0] * 2)
+    rejoin = np.array([False] * 5 + [True, True] + [False] * 2)
+    aim_x, aim_y = np.array([0.0] * 7 + [803.0, 900.0]), np.array([0.0] * 7 + [800.0, 880.0])
+    move(P, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y, rejoin,
+         aim_x, aim_y)
     assert px[:5] == pytest.approx([103.0, 2000.0, 2000.0, 2095.0, 2000.0])
     assert py[:5] == pytest.approx([104.0, 2000.0, 2000.0, 2000.0, 2000.0])
     assert (px[2], py[2]) == (px[4], py[4]) == BS  # exactly on the BS
     assert mode.tolist() == [SEARCHING, LANDED, LANDED, RETURNING, REPORTING, SEARCHING,
-                             SEARCHING]
+                             SEARCHING, RELAYING, RELAYING]
+    assert (px[7], py[7]) == (803.0, 800.0) and (px[8], py[8]) == (900.0, 895.0)
     assert (px[5], py[5]) == pytest.approx((503.0, 502.0))
     assert (hx[5], hy[5]) == (0.0, 1.0) and not rejoin[5]
     assert (px[6], py[6]) == (600.0, 605.0) and (hx[6], hy[6]) == (0.0, 1.0) and rejoin[6]
@@ -301,7 +307,7 @@ def test_no_drone_moves_farther_than_v_dt_and_free_flyers_move_exactly_that(
     wp_next, wp_end = np.arange(0, 2 * n, 2), np.arange(2, 2 * n + 1, 2)
     x0, y0 = px.copy(), py.copy()
     move(P, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, np.zeros(n), np.zeros(n),
-         np.zeros(n, dtype=np.bool_))
+         np.zeros(n, dtype=np.bool_), np.zeros(n), np.zeros(n))
     moved = np.hypot(px - x0, py - y0)
     assert (moved <= STEP + 1e-9).all()
     for i, (x, y, _, was, routed) in enumerate(drones):
