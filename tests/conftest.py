@@ -38,3 +38,33 @@ def fresh_registries(monkeypatch: pytest.MonkeyPatch) -> None:
         monkeypatch.setattr(registry, "_entries", dict(registry._entries))
         monkeypatch.setattr(registry, "_broken", dict(registry._broken))
         monkeypatch.setattr(registry, "_loaded", registry._loaded)
+
+
+KERNELS = [("mtsp", True, None), ("covb", False, None), ("conb", False, None),
+           ("concov", False, None), ("covb", False, "tree"), ("conb", False, "tree"),
+           ("mtsp", False, "tree")]
+"""The engine's kernels most test files fly (planner, with the range scan, relay strategy)."""
+
+
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """Before pytest-xdist starts its workers on the whole suite, compile the kernels most
+    test files fly into the cache the workers share, one per core: otherwise every worker
+    compiles each of them (minutes each) when its first test needs it, mostly at once."""
+    config = session.config
+    workers = (config.getoption("numprocesses", None)
+               if config.pluginmanager.has_plugin("xdist") else None)
+    if not workers or hasattr(config, "workerinput") or config.option.file_or_dir:
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    from sarlink.simulation import warm_up
+
+    root = config._tmp_path_factory.getbasetemp()  # the workers' basetemps are inside it
+    (root / "sarlink-cache").mkdir(exist_ok=True)
+    os.environ["SARLINK_CACHE_DIR"] = str(root / "sarlink-cache")
+    with ProcessPoolExecutor(min(int(workers), len(KERNELS)),
+                             mp_context=multiprocessing.get_context("spawn")) as pool:
+        for done in [pool.submit(warm_up, planner, "disc", ranges=ranges, relays=relays)
+                     for planner, ranges, relays in KERNELS]:
+            done.result()
