@@ -7,8 +7,9 @@ position, heading and route. Where it believes a drone it has not heard since is
 ``team.relay_estimate``:
 
 - ``reckoned``: dead reckoning from the last hearing: along its route at ``V_m`` for a drone
-  that flies one, straight home for one flying home, else on along its last heading at
-  ``V_m`` (into the area): what the BS can know without hearing it;
+  that flies one, straight home for one flying home, where it was heard for a drone of the
+  chain to a found target (it holds its point, ``on_detect = relay``), else on along its last
+  heading at ``V_m`` (into the area): what the BS can know without hearing it;
 - ``heard``: where it was last heard. Such a point had a route to the BS, so the tree rarely
   needs a relay to reach it, and the relays hardly leave the BS (docs/model.md, Relays).
 """
@@ -21,7 +22,7 @@ from numba import njit
 from sarlink.engine.codes import Estimate
 from sarlink.engine.graph import has
 from sarlink.engine.observation import Observation
-from sarlink.engine.params import LANDED, RELAYING, REPORTING, RETURNING, Params
+from sarlink.engine.params import CHAINING, LANDED, RELAYING, REPORTING, RETURNING, Params
 from sarlink.engine.relays.placement import dist, into_area, plan
 
 HEARD = int(Estimate.HEARD)
@@ -53,7 +54,7 @@ def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int, edges
     ``edges``: the area (:func:`~sarlink.engine.relays.placement.into_area`)."""
     x, y = heard[0, i], heard[1, i]
     travel = p.speed * p.dt * (k - heard[4, i])
-    if travel <= 0.0:
+    if travel <= 0.0 or obs.mode[i] == CHAINING:  # a drone of the chain to a found target holds
         return x, y
     if obs.on_route[i] and obs.mode[i] != REPORTING:
         w = int(heard[5, i])
