@@ -157,6 +157,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     t_not: float | None = None
     detector = -1
     chain: list[tuple[float, float]] = []  # on_detect = relay: the chain's points from the BS
+    slot: dict[int, int] = {}  # the point each drone of the chain holds
     reach_time = conn_time = 0.0
     steps = round(mission.timing.horizon / dt)
     coherence = round(mission.coherence / dt)
@@ -324,11 +325,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         """``on_detect = relay``: at the detection the detector (searching or relaying) holds
         where it is, leaving its route, and the chain's points are set: the fewest that cut
         the segment from the BS to it into hops of at most r_c, evenly spaced, into the
-        area. Every step, each component of the links takes its free drones (they know, are
-        not the detector, and search, relay or hold a point of the chain) in index order and
-        gives them the points nearest the BS, as many as there are of them, by the
-        bottleneck assignment; one given a point flies to it and stays in the chain, a chain
-        drone given none holds where it is, a searcher given none searches on."""
+        area. Every step, in each component of the links, its free drones (they know, are
+        not the detector, and search, relay or hold a point of the chain), in index order:
+        a chain drone keeps its point unless one before it in the component holds it
+        nearer (or as near); the others take the points none of them holds, those nearest
+        the BS, as many as there are of them, by the bottleneck assignment; one given a
+        point flies to it and stays in the chain, a chain drone given none holds where it
+        is, a searcher given none searches on."""
         if t_det == t:
             d = pos[detector]
             if mode[detector] in ("search", "relaying"):
@@ -344,22 +347,37 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         def free(j: int) -> bool:
             return knows[j] and j != detector and mode[j] in ("search", "relaying", "chaining")
 
+        def xy(where: list[tuple[float, float]]) -> tuple[np.ndarray, np.ndarray]:
+            return np.array([w[0] for w in where]), np.array([w[1] for w in where])
+
         done: set[int] = set()
         for i in range(n):
             if i in done or not free(i):
                 continue
             members = sorted(j for j in component({i}, links, blocked=TG) if j < n and free(j))
             done |= set(members)
-            q = min(len(members), len(chain))
-            goal, _ = assign.py_func(np.array([pos[j][0] for j in members]),
-                                     np.array([pos[j][1] for j in members]),
-                                     np.array([c[0] for c in chain[:q]]),
-                                     np.array([c[1] for c in chain[:q]]))
-            for j, g in zip(members, goal.tolist(), strict=True):
+            holder: dict[int, int] = {}
+            waiting = []
+            for j in members:
+                b = slot.get(j) if mode[j] == "chaining" else None
+                if b is None:
+                    waiting.append(j)
+                elif b not in holder:
+                    holder[b] = j
+                else:  # two hold one point: the nearer keeps it, the other waits
+                    if _dist(pos[j], chain[b]) < _dist(pos[holder[b]], chain[b]):
+                        holder[b], j = j, holder[b]
+                    del slot[j]
+                    waiting.append(j)
+            unheld = [b for b in range(len(chain)) if b not in holder][:len(waiting)]
+            goal, _ = assign.py_func(*xy([pos[j] for j in waiting]),
+                                     *xy([chain[b] for b in unheld]))
+            for j, g in zip(waiting, goal.tolist(), strict=True):
                 if g >= 0:
                     mode[j] = "chaining"
                     route[j] = []
-                    aim[j] = chain[g]
+                    slot[j] = unheld[g]
+                    aim[j] = chain[unheld[g]]
                 elif mode[j] == "chaining":
                     aim[j] = pos[j]
 

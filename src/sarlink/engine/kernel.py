@@ -120,6 +120,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     if CHAIN:  # compiled only for on_detect = relay (build)
         chain_x, chain_y = np.empty(0), np.empty(0)  # the chain's points, once found
         heard = np.zeros(nw, dtype=np.uint64)
+        slot = np.full(n, -1, dtype=np.int64)  # the point each drone of the chain holds
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
@@ -203,7 +204,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                 chain_x, chain_y = relay_chain.start(p, obs.rc, detector, mode, on_route, px,
                                                      py, aim_x, aim_y, edges)
             relay_chain.join(detector, knows, mode, on_route, px, py, adj, chain_x, chain_y,
-                             aim_x, aim_y, heard, stack)
+                             slot, aim_x, aim_y, heard, stack)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
         if RULE_DUE:

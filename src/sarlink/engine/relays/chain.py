@@ -7,15 +7,15 @@ The chain is the relay placement's tree over two terminals, the BS and the detec
 (:func:`sarlink.engine.relays.placement.tree`): ``ceil(L / r_c) - 1`` points evenly spaced on
 the segment of length ``L``, each moved into the area. The news of the find carries the
 detection point, so every drone that knows has the same points. Each step, the drones one
-knower can hear (its component of the links) share out the points by the placement's
-bottleneck assignment (:func:`sarlink.engine.relays.placement.assign`). With fewer of them
-than points they take those nearest the BS: the chain grows from the BS out, its first drone
-tells the BS much as a reporting drone would (it flies towards the BS until linked), and every
-drone that comes within range of the part held learns and extends it (the drones shift out
-by a point each, the bottleneck assignment's choice). A drone given a point stays in the
-chain until its budget turns it home (given none later, when another component's drones
-have joined its own, it holds where it is); a knower given none keeps searching, as it
-would without the chain. Nothing is random.
+knower can hear (its component of the links) share out the points no drone among them holds,
+by the placement's bottleneck assignment (:func:`sarlink.engine.relays.placement.assign`);
+a drone that holds a point keeps it, so that no searcher passing closer takes it over. With
+fewer drones than open points they take those nearest the BS: the chain grows from the BS
+out, its first drone tells the BS much as a reporting drone would (it flies towards the BS
+until linked), and every drone that comes within range of the part held learns and extends
+it. A drone given a point stays in the chain until its budget turns it home (if two hold one
+point when their components meet, the farther holds where it is until a point opens); a
+knower given none keeps searching, as it would without the chain. Nothing is random.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from numba import njit
 from sarlink.engine.graph import add, component, has
 from sarlink.engine.params import CHAINING, RELAYING, SEARCHING, Params
 from sarlink.engine.relays.flight import fly
-from sarlink.engine.relays.placement import assign, points, tree
+from sarlink.engine.relays.placement import assign, dist, points, tree
 
 
 @njit(cache=True, error_model="numpy")
@@ -59,37 +59,59 @@ def free(i: int, detector: int, knows: np.ndarray, mode: np.ndarray) -> bool:
 @njit(cache=True, error_model="numpy")
 def join(detector: int, knows: np.ndarray, mode: np.ndarray, on_route: np.ndarray,
          px: np.ndarray, py: np.ndarray, adj: np.ndarray, cx: np.ndarray, cy: np.ndarray,
-         aim_x: np.ndarray, aim_y: np.ndarray, heard: np.ndarray, stack: np.ndarray) -> None:
-    """One step's share-out of the chain's points ``(cx, cy)`` (module docstring): in each
-    component of the links ``adj`` (never through the target), the free drones (:func:`free`)
-    take the points nearest the BS, as many as there are of them, by the bottleneck
-    assignment from where they are; a drone given a point flies to it (``aim``) as a chain
-    drone, a chain drone given none holds where it is, a knower given none flies on.
-    ``heard`` is a bitset workspace, ``stack`` the search's."""
+         slot: np.ndarray, aim_x: np.ndarray, aim_y: np.ndarray, heard: np.ndarray,
+         stack: np.ndarray) -> None:
+    """One step's share-out of the chain's points ``(cx, cy)`` (module docstring), in each
+    component of the links ``adj`` (never through the target) that has a free drone
+    (:func:`free`). A chain drone keeps its point (``slot``, -1: none) unless another chain
+    drone of the component holds the same one nearer (ties: the lower index). The free drones
+    without a point (searchers, and chain drones without one) take the points nobody in the
+    component holds, those nearest the BS, as many as there are of them, by the bottleneck
+    assignment from where they are: a drone given one flies to it as a chain drone; a chain
+    drone given none holds where it is, a searcher given none flies on. ``heard`` is a bitset
+    workspace, ``stack`` the search's."""
     n = knows.shape[0]
     total = cx.shape[0]
     seen = np.zeros(n, dtype=np.bool_)
-    who = np.empty(n, dtype=np.int64)
+    holder = np.empty(total, dtype=np.int64)
+    waiting = np.empty(n, dtype=np.int64)
     for i in range(n):
         if seen[i] or not free(i, detector, knows, mode):
             continue
         heard[:] = 0
         add(heard, i)
         component(adj, n + 1, heard, stack)
-        m = 0
+        holder[:] = -1
+        w = 0
         for j in range(i, n):
-            if has(heard, j) and free(j, detector, knows, mode):
-                seen[j] = True
-                who[m] = j
-                m += 1
-        q = min(m, total)
-        goal, _ = assign(px[who[:m]], py[who[:m]], cx[:q], cy[:q])
-        for s in range(m):
-            j = who[s]
-            if goal[s] >= 0:
+            if not (has(heard, j) and free(j, detector, knows, mode)):
+                continue
+            seen[j] = True
+            b = slot[j]
+            if mode[j] != CHAINING or b < 0:
+                waiting[w] = j
+                w += 1
+            elif holder[b] < 0:
+                holder[b] = j
+            else:  # two hold one point: the nearer keeps it
+                h = holder[b]
+                if dist(px[j], py[j], cx[b], cy[b]) < dist(px[h], py[h], cx[b], cy[b]):
+                    holder[b], h = j, h
+                else:
+                    h = j
+                slot[h] = -1
+                waiting[w] = h
+                w += 1
+        open_ = np.flatnonzero(holder < 0)[:w]
+        goal, _ = assign(px[waiting[:w]], py[waiting[:w]], cx[open_], cy[open_])
+        for a in range(w):
+            j = waiting[a]
+            if goal[a] >= 0:
+                b = open_[goal[a]]
                 mode[j] = CHAINING
                 on_route[j] = False
-                aim_x[j], aim_y[j] = cx[goal[s]], cy[goal[s]]
+                slot[j] = b
+                aim_x[j], aim_y[j] = cx[b], cy[b]
             elif mode[j] == CHAINING:
                 aim_x[j], aim_y[j] = px[j], py[j]
 
