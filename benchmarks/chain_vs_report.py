@@ -41,7 +41,7 @@ def _notify_times(planner: str, mode: str, runs: int) -> tuple[np.ndarray, np.nd
         t = math.inf if r.t_notify is None else r.t_notify
         notify.append(t)
         if math.isfinite(t) and t < HORIZON:
-            held = r.t_reachable(HORIZON) - r.t_reachable(t)
+            held = r.t_reachable(HORIZON) - (r.t_reachable(t) if t > 0 else 0.0)
             after.append(held / (HORIZON - t))
     return np.array(notify), np.array(after)
 
