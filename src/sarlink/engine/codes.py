@@ -37,7 +37,8 @@ STOP_CODES = {"horizon": Stop.HORIZON, "detected": Stop.DETECTED, "notified": St
 
 
 class OnDetect(IntEnum):
-    """What a drone does once it knows the target's location and the BS does not."""
+    """What a drone does once it knows the target's location (``report``: while the BS does
+    not; ``relay``: for good)."""
 
     CONTINUE = 0  # the paper: keep flying its plan
     REPORT = 1  # fly straight to the BS until it is notified, then resume

@@ -9,7 +9,8 @@ or updates, the team's rule, the boundary rule) and moves. Node indices: drones 
 the BS ``N``, the target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
 
 This file is a template: :mod:`sarlink.engine.build` compiles it once per distributed rule,
-radio model and relay strategy (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
+radio model and relay strategy (:mod:`sarlink.engine.hooks`), and with the chain to a found
+target or without (``CHAIN``, ``on_detect = relay``), replacing the block of plug-in imports
 below, into a module of its own in the cache folder, named after the digest of every source it
 depends on (so an edit anywhere recompiles, and every process shares the compiled code).
 The same text also gives the kernel's stepping form (``build.kernel_for(..., stepping=True)``,
