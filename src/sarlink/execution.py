@@ -101,7 +101,7 @@ def _may_share(mission: Mission) -> bool:
     """Whether ``mission``'s team may fly the same at every range, from its planner and radio
     alone (the worker checks the routes: :mod:`sarlink.engine.sharing`)."""
     rule = get_planner(mission.team.planner).rule
-    return (get_radio(mission.radio).range_free and mission.team.on_detect != "report"
+    return (get_radio(mission.radio).range_free and mission.team.on_detect == "continue"
             and (rule is None or rule.range_free or get_planner(mission.team.planner).kind
                  == "hybrid"))
 
