@@ -14,6 +14,12 @@ placement, run as plain Python (``plan.py_func``): :func:`relay_plan` below has 
 points, no assignment and no points, so it is no plan the engine would make;
 tests/test_relay_placement.py checks the placement on its own (against :func:`relay_plan`,
 brute force, OR-Tools and exact bounds).
+
+The chain to a found target (``on_detect = relay``, docs/model.md, Search, then relay) is
+flown from the model's text too: the detector's hold, the chain's points on the segment from
+the BS to it, the share-out in each component of the links, the points nearest the BS first,
+the flight and homing. The share-out itself is the engine's bottleneck assignment, run as
+plain Python (``assign.py_func``), checked on its own in tests/test_relay_placement.py.
 """
 
 from __future__ import annotations
@@ -27,7 +33,7 @@ import numpy as np
 
 from sarlink.config import Mission
 from sarlink.engine.codes import PRIORITY_CODES
-from sarlink.engine.relays.placement import plan
+from sarlink.engine.relays.placement import assign, plan
 from sarlink.engine.streams import run_streams
 
 
@@ -150,6 +156,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     z: dict[tuple[int, int], float] = {}  # correlated shadowing's normal state per link
     t_det: float | None = None
     t_not: float | None = None
+    detector = -1
+    chain: list[tuple[float, float]] = []  # on_detect = relay: the chain's points from the BS
+    slot: dict[int, int] = {}  # the point each drone of the chain holds
     reach_time = conn_time = 0.0
     steps = round(mission.timing.horizon / dt)
     coherence = round(mission.coherence / dt)
@@ -282,11 +291,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
 
     def reckoned(i: int, k: int) -> tuple[float, float]:
         """Where the BS believes drone ``i`` at step ``k``, by dead reckoning from when it
-        last heard it: on along its route at V_m if it flies one, straight home if it was
-        flying home then, else on along the heading it was heard with (into the area)."""
+        last heard it, by what it was doing then: on along its route at V_m if it flew one,
+        straight home if it was flying home, where it was heard if it held a point of the
+        chain to a found target, else on along the heading it was heard with (into the
+        area)."""
         x, y, h, when, w, was = heard[i]
         travel = v * dt * (k - when)
-        if travel <= 0:
+        if travel <= 0 or was == "chaining":  # it holds its point of the chain
             return x, y
         if route[i]:
             for wx, wy in route[i][w:]:
@@ -301,6 +312,76 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                 return bs
             return x + travel * (bs[0] - x) / d, y + travel * (bs[1] - y) / d
         return clamp((x + travel * math.cos(h), y + travel * math.sin(h)))
+
+    def fly_to_aim(i: int, t: float, new: list[float]) -> None:
+        """A drone holding a point (a relay, a drone of the chain): home if its budget is
+        due, else straight for its aim."""
+        home = _dist(pos[i], bs)
+        if (mission.team.flight_time - t) - home / v < 2 * dt:
+            mode[i] = "returning"
+            new[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
+        elif aim[i] != pos[i]:
+            new[i] = math.atan2(aim[i][1] - pos[i][1], aim[i][0] - pos[i][0])
+
+    def form_the_chain(t: float, links: dict[int, set[int]]) -> None:
+        """``on_detect = relay``: at the detection the detector (searching or relaying) holds
+        where it is, leaving its route, and the chain's points are set: the fewest that cut
+        the segment from the BS to it into hops of at most r_c, evenly spaced, into the
+        area. Every step, in each component of the links, its free drones (they know, are
+        not the detector, and search, relay or hold a point of the chain), in index order:
+        a chain drone keeps its point unless one before it in the component holds it
+        nearer (or as near); the others take the points none of them holds, those nearest
+        the BS, as many as there are of them, by the bottleneck assignment; one given a
+        point flies to it and stays in the chain, a chain drone given none holds where it
+        is, a searcher given none searches on."""
+        if t_det == t:
+            d = pos[detector]
+            if mode[detector] in ("search", "relaying"):
+                mode[detector] = "chaining"
+                route[detector] = []
+                aim[detector] = d
+            gap = length(d[0] - bs[0], d[1] - bs[1])
+            count = max(0, math.ceil((gap - 1e-9) / rc) - 1)
+            chain[:] = [clamp((bs[0] + j / (count + 1) * (d[0] - bs[0]),
+                               bs[1] + j / (count + 1) * (d[1] - bs[1])))
+                        for j in range(1, count + 1)]
+
+        def free(j: int) -> bool:
+            return knows[j] and j != detector and mode[j] in ("search", "relaying", "chaining")
+
+        def xy(where: list[tuple[float, float]]) -> tuple[np.ndarray, np.ndarray]:
+            return np.array([w[0] for w in where]), np.array([w[1] for w in where])
+
+        done: set[int] = set()
+        for i in range(n):
+            if i in done or not free(i):
+                continue
+            members = sorted(j for j in component({i}, links, blocked=TG) if j < n and free(j))
+            done |= set(members)
+            holder: dict[int, int] = {}
+            waiting = []
+            for j in members:
+                b = slot.get(j) if mode[j] == "chaining" else None
+                if b is None:
+                    waiting.append(j)
+                elif b not in holder:
+                    holder[b] = j
+                else:  # two hold one point: the nearer keeps it, the other waits
+                    if _dist(pos[j], chain[b]) < _dist(pos[holder[b]], chain[b]):
+                        holder[b], j = j, holder[b]
+                    del slot[j]
+                    waiting.append(j)
+            unheld = [b for b in range(len(chain)) if b not in holder][:len(waiting)]
+            goal, _ = assign.py_func(*xy([pos[j] for j in waiting]),
+                                     *xy([chain[b] for b in unheld]))
+            for j, g in zip(waiting, goal.tolist(), strict=True):
+                if g >= 0:
+                    mode[j] = "chaining"
+                    route[j] = []
+                    slot[j] = unheld[g]
+                    aim[j] = chain[unheld[g]]
+                elif mode[j] == "chaining":
+                    aim[j] = pos[j]
 
     def hold_the_link(k: int, t: float, routed: set[int], new: list[float]) -> None:
         """The relays' part of step ``k``'s decisions: the BS hears every drone with a route
@@ -329,12 +410,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             if mode[i] != "relaying":
                 continue
             aim[i] = clamp(points[i]) if i in routed else bs
-            home = _dist(pos[i], bs)
-            if (mission.team.flight_time - t) - home / v < 2 * dt:
-                mode[i] = "returning"
-                new[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
-            elif aim[i] != pos[i]:
-                new[i] = math.atan2(aim[i][1] - pos[i][1], aim[i][0] - pos[i][0])
+            fly_to_aim(i, t, new)
 
     heard = [(bs[0], bs[1], heading[i], 0, 0, mode[i]) for i in range(n)]
     for k in range(steps + 1):
@@ -366,7 +442,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                 if look and streams.look.random() >= mission.sensing.p_miss:
                     knows[i] = True
                     if t_det is None:
-                        t_det = t
+                        t_det, detector = t, i
             in_range[i] = now_in
         links = link_graph(pos, faded=True)
         routed = component({BS}, links, blocked=TG)
@@ -395,6 +471,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
 
         # decide
         new = list(heading)
+        if mission.team.on_detect == "relay" and t_det is not None:
+            form_the_chain(t, links)
 
         routed_next: set[int] | None = None
         continuous = rule and alpha < 1 and readings.conb_check == "continuous"
@@ -442,6 +520,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             new[i] = h2
         if searchers < n:
             hold_the_link(k, t, routed, new)
+        for i in range(n):
+            if mode[i] == "chaining":
+                fly_to_aim(i, t, new)
         heading = new
 
         # move
@@ -452,7 +533,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                 pos[i] = bs
                 mode[i] = "landed"
                 continue
-            if mode[i] == "relaying":
+            if mode[i] in ("relaying", "chaining"):
                 dx, dy = aim[i][0] - pos[i][0], aim[i][1] - pos[i][1]
                 step = v * dt
                 pos[i] = aim[i] if dx * dx + dy * dy <= step * step else (

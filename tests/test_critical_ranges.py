@@ -203,11 +203,12 @@ def test_a_sweep_over_rc_equals_a_sweep_per_range(planner: str, staircase: bool,
     assert (varied.max(axis=1) > 1).all()  # each run's outcome depends on the range
 
 
-def _tasks(folder: Path, planners: list[str], staircase: bool = False) -> list:
+def _tasks(folder: Path, planners: list[str], staircase: bool = False,
+           on_detect: str = "continue") -> list:
     """The tasks of 8 runs, in chunks of 4, of 4 drones of each planner at two ranges."""
     experiment = Experiment.from_dict({
         "name": "tasks", "seed": 1, "runs": 8, "chunk": 4, "staircase": staircase,
-        "mission": {"team": {"drones": 4}},
+        "mission": {"team": {"drones": 4, "on_detect": on_detect}},
         "grid": {"planner": planners, "rc": [500.0, 1000.0]}})
     with storage.open_store(folder, experiment) as store:
         return execution._plan(store, experiment.runs, experiment.chunk, staircase)
@@ -231,7 +232,8 @@ def test_sweep_jobs_group_only_range_free_points(tmp_path: Path) -> None:
 def test_the_parts_to_compile_spread_the_scan_and_the_ga_over_the_workers(
         tmp_path: Path) -> None:
     """The kernels scan several ranges themselves; the staircase is a part of its own,
-    compiled only where a team may be scanned by it."""
+    compiled only where a team may be scanned by it: not a team forming a chain to a found
+    target (``on_detect = relay``), whose kernel is a part of its own."""
     parts = [("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
              ("kernel", "covb", "disc")]
     tasks = _tasks(tmp_path / "plain", ["conb", "mtsp", "covb"])
@@ -240,6 +242,8 @@ def test_the_parts_to_compile_spread_the_scan_and_the_ga_over_the_workers(
     assert execution._parts(execution._jobs(stairs)) == [*parts, ("ranges", "mtsp", "disc")]
     conb = _tasks(tmp_path / "conb", ["conb"], staircase=True)
     assert execution._parts(execution._jobs(conb)) == [("kernel", "conb", "disc")]
+    chain = _tasks(tmp_path / "chain", ["covb"], staircase=True, on_detect="relay")
+    assert execution._parts(execution._jobs(chain)) == [("kernel", "covb", "disc", "chain")]
 
 
 def test_warming_up_the_scan_compiles_it() -> None:

@@ -52,6 +52,18 @@ def test_the_estimate_takes_this_machine_s_record(monkeypatch: pytest.MonkeyPatc
                                           "disc")]) == "kernel of conb, the staircase"
 
 
+def test_a_kernel_forming_a_chain_is_a_part_of_its_own() -> None:
+    """``on_detect = relay`` compiles its own kernel (``CHAIN``): its part ends in
+    :data:`~sarlink.compile_times.CHAIN_PART`, which is no relay strategy."""
+    chain = compile_times.CHAIN_PART
+    parts = [("kernel", "covb", "disc", chain), ("kernel", "covb", "disc", "tree", chain),
+             ("kernel", "covb", "disc", "tree")]
+    assert [compile_times.part_relays(p) for p in parts] == [None, "tree", "tree"]
+    assert compile_times.describe_parts(parts) == (
+        "kernels of covb forming a chain, covb with relays (tree) forming a chain and covb "
+        "with relays (tree)")
+
+
 def test_a_sweep_says_what_it_compiles_before_it_does(
         monkeypatch: pytest.MonkeyPatch, tmp_path: Path,
         capsys: pytest.CaptureFixture[str]) -> None:

@@ -132,6 +132,18 @@ def test_dead_reckoning_reads_what_the_bs_heard_not_what_the_drone_does_now(now:
     assert math.dist((x, y), (p.bs_x, p.bs_y)) == pytest.approx(home - 10 * step)
 
 
+def test_a_drone_of_the_chain_to_a_found_target_is_reckoned_where_it_was_heard() -> None:
+    """``on_detect = relay``: a drone of the chain holds its point, so the BS puts it where it
+    last heard it, not on along its heading as a searcher."""
+    prepared = prepare(Mission.build(drones=3, relays=1))
+    heard = np.array([[1000.0, 1000.0], [1000.0, 1000.0], [1.0, 1.0], [0.0, 0.0],
+                      [0.0, 0.0], [0.0, 0.0], [Mode.SEARCHING, Mode.CHAINING], [0.0, 0.0]])
+    obs = _heard(2)
+    p, edges = prepared.params, prepared.edges
+    assert reckon(10, p, obs, heard, 0, edges) == (1050.0, 1000.0)
+    assert reckon(10, p, obs, heard, 1, edges) == (1000.0, 1000.0)
+
+
 @pytest.mark.parametrize(("relays", "message"), [
     (8, "team.relays = 8 leaves no searcher among team.drones = 8; allowed: 0 to 7"),
     (9, "team.relays = 9 leaves no searcher among team.drones = 8; allowed: 0 to 7"),

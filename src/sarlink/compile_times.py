@@ -19,7 +19,19 @@ from pathlib import Path
 from sarlink.cachedir import cache_root
 from sarlink.planners import get_planner
 
-__all__ = ["TYPICAL", "compile_estimate", "describe_parts", "record_compile"]
+__all__ = ["CHAIN_PART", "TYPICAL", "compile_estimate", "describe_parts", "part_relays",
+           "record_compile"]
+
+CHAIN_PART = "chain"
+"""The item that ends the part of a kernel whose team forms a chain to a found target
+(``on_detect = relay``)."""
+
+
+def part_relays(part: tuple[str, ...]) -> str | None:
+    """The relay strategy a kernel part names (its fourth item unless that is
+    :data:`CHAIN_PART`), None for a team without."""
+    rest = [item for item in part[3:] if item != CHAIN_PART]
+    return rest[0] if rest else None
 
 TYPICAL = {"kernel": 30.0, "staircase": 15.0, "GA": 15.0}
 """Rough CPU seconds of one part on a 2-core x86-64 machine, by kind, used until this
@@ -33,8 +45,9 @@ def _name(part: tuple[str, ...]) -> str:
     if part[0] == "ranges":
         return "staircase"
     rule = get_planner(part[1]).rule
-    relays = f" with relays ({part[3]})" if len(part) > 3 else ""
-    return f"kernel {rule.name if rule is not None else 'routes'}{relays}"
+    relays = f" with relays ({part_relays(part)})" if part_relays(part) else ""
+    chain = " forming a chain" if CHAIN_PART in part[3:] else ""
+    return f"kernel {rule.name if rule is not None else 'routes'}{relays}{chain}"
 
 
 def _file() -> Path:

@@ -35,7 +35,13 @@ import pandas as pd
 import pyarrow as pa
 
 from sarlink import storage
-from sarlink.compile_times import compile_estimate, describe_parts, record_compile
+from sarlink.compile_times import (
+    CHAIN_PART,
+    compile_estimate,
+    describe_parts,
+    part_relays,
+    record_compile,
+)
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
 from sarlink.engine.build import kernel_for, on_disk
@@ -95,7 +101,7 @@ def _may_share(mission: Mission) -> bool:
     """Whether ``mission``'s team may fly the same at every range, from its planner and radio
     alone (the worker checks the routes: :mod:`sarlink.engine.sharing`)."""
     rule = get_planner(mission.team.planner).rule
-    return (get_radio(mission.radio).range_free and mission.team.on_detect != "report"
+    return (get_radio(mission.radio).range_free and mission.team.on_detect == "continue"
             and (rule is None or rule.range_free or get_planner(mission.team.planner).kind
                  == "hybrid"))
 
@@ -179,7 +185,8 @@ def _compile(part: tuple[str, ...], plugins: Plugins) -> float:
 
         solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
     else:
-        warm_up(part[1], part[2], ranges=part[0] == "ranges", relays=_relays(part))
+        warm_up(part[1], part[2], ranges=part[0] == "ranges", relays=part_relays(part),
+                chain=CHAIN_PART in part[3:])
     return time.perf_counter() - start
 
 
@@ -194,14 +201,10 @@ def _compiled(part: tuple[str, ...]) -> bool:
         from sarlink.engine.critical_ranges import critical
 
         return on_disk(critical)
-    relays = _relays(part)
+    relays = part_relays(part)
     return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2]),
-                              get_relay_strategy(relays) if relays else None))
-
-
-def _relays(part: tuple[str, ...]) -> str | None:
-    """The relay strategy a kernel part names (its fourth item), None for a team without."""
-    return part[3] if len(part) > 3 else None
+                              get_relay_strategy(relays) if relays else None,
+                              chain=CHAIN_PART in part[3:]))
 
 
 def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
@@ -216,8 +219,9 @@ def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
     for m in missions:
         rule = get_planner(m.team.planner).rule
         relays = (m.team.relay_strategy,) if m.team.relays else ()
-        kernels.setdefault((rule, radio_identity(get_radio(m.radio)), *relays),
-                           ("kernel", m.team.planner, m.radio, *relays))
+        chain = (CHAIN_PART,) if m.team.on_detect == "relay" else ()
+        kernels.setdefault((rule, radio_identity(get_radio(m.radio)), *relays, *chain),
+                           ("kernel", m.team.planner, m.radio, *relays, *chain))
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
     shared = next((t.point.mission for job in jobs for t in job
                    if t.staircase and _may_share(t.point.mission)), None)

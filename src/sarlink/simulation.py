@@ -28,16 +28,18 @@ def check_mission(mission: Mission) -> None:
 
 
 def warm_up(planner: str, radio: str, *, ranges: bool = False,
-            relays: str | None = None) -> None:
+            relays: str | None = None, chain: bool = False) -> None:
     """Compile (or load from the disk cache) the kernel of ``planner``'s rule, the radio
-    model ``radio`` and the relay strategy ``relays`` (None: a team without relays), by
-    flying one tiny run that needs no plan; with ``ranges``, also the scan of one flight's
-    staircase after it (:meth:`~sarlink.engine.Prepared.run_ranges`), from a drone on a
-    route, which flies the same at every range under any rule's kernel."""
+    model ``radio``, the relay strategy ``relays`` (None: a team without relays) and the
+    chain to a found target if ``chain`` (``on_detect = relay``), by flying one tiny run that
+    needs no plan; with ``ranges``, also the scan of one flight's staircase after it
+    (:meth:`~sarlink.engine.Prepared.run_ranges`), from a drone on a route, which flies the
+    same at every range under any rule's kernel."""
     rule = get_planner(planner).rule
     team = {"drones": 2, "relays": 1, "relay_strategy": relays} if relays else {"drones": 1}
     mission = Mission.build(planner=planner, horizon=10.0, radio=radio,
-                            sigma=0.0 if radio == "disc" else 1.0, **team)
+                            sigma=0.0 if radio == "disc" else 1.0,
+                            on_detect="relay" if chain else "continue", **team)
     route = (np.array([mission.area.bs_xy]),)
     if ranges:
         steering = Steering(rule=rule, routes=route)

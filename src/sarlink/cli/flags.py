@@ -139,8 +139,9 @@ FLAGS: tuple[Flag, ...] = _rows(
     ("--pathloss-exponent", float, "path-loss exponent n", "pathloss_exponent",
      {*ONE_RUN, "design"}),
     ("--stop", str, "end the run at", "stop", ONE_RUN),
-    ("--on-detect", str, "what a drone does once it knows where the target is: keep its plan "
-     "(the paper) or report (fly to the BS)", "on_detect", ONE_RUN),
+    ("--on-detect", str, "what a drone does once it knows where the target is: continue (keep "
+     "its plan, the paper), report (fly to the BS) or relay (the detector holds, the others "
+     "form a chain to the BS)", "on_detect", ONE_RUN),
     ("--solver", str, "mTSP solver: ga (the paper's) or ortools (the strong one)", "solver",
      {"plan"}),
     ("--objective", str, "mTSP objective: minsum (total distance, the paper's) or minmax "

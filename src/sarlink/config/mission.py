@@ -67,11 +67,12 @@ class Team(Checked):
     nr: int = Field(6, ge=1, strict=True,
                     description="mTSP-ConB: drones reserved for the mTSP plan")
     flight_time: float = Field(4000.0, gt=0, description="flight budget T_max, s")
-    on_detect: Literal["continue", "report"] = Field(
+    on_detect: Literal["continue", "report", "relay"] = Field(
         "continue",
         description="continue: the paper, drones keep their plan after learning where the "
         "target is; report: such a drone flies straight to the BS until it is notified, then "
-        "resumes (beyond the paper; docs/model.md)",
+        "resumes; relay: the detector holds over the target and the drones that know form a "
+        "chain of links from the BS to it (beyond the paper; docs/model.md)",
     )
     reporters: Literal["knowers", "detector"] = Field(
         "knowers",

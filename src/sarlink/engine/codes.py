@@ -11,6 +11,8 @@ class Mode(IntEnum):
     LANDED = 2  # at the BS; still relays
     REPORTING = 3  # knows the target, the BS does not: flying straight to the BS to tell it
     RELAYING = 4  # a relay drone: flying to, or holding, its point of the searchers' link
+    CHAINING = 5  # on_detect = relay: flying to, or holding, a point of the chain from the BS
+    # to a found target (the detector holds where it found it)
 
 
 class Look(IntEnum):
@@ -35,13 +37,16 @@ STOP_CODES = {"horizon": Stop.HORIZON, "detected": Stop.DETECTED, "notified": St
 
 
 class OnDetect(IntEnum):
-    """What a drone does once it knows the target's location and the BS does not."""
+    """What a drone does once it knows the target's location (``report``: while the BS does
+    not; ``relay``: for good)."""
 
     CONTINUE = 0  # the paper: keep flying its plan
     REPORT = 1  # fly straight to the BS until it is notified, then resume
+    RELAY = 2  # the detector holds over the target, the knowers form a chain to the BS
 
 
-ON_DETECT_CODES = {"continue": OnDetect.CONTINUE, "report": OnDetect.REPORT}
+ON_DETECT_CODES = {"continue": OnDetect.CONTINUE, "report": OnDetect.REPORT,
+                   "relay": OnDetect.RELAY}
 
 
 class Reporters(IntEnum):

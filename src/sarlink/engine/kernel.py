@@ -9,7 +9,8 @@ or updates, the team's rule, the boundary rule) and moves. Node indices: drones 
 the BS ``N``, the target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
 
 This file is a template: :mod:`sarlink.engine.build` compiles it once per distributed rule,
-radio model and relay strategy (:mod:`sarlink.engine.hooks`), replacing the block of plug-in imports
+radio model and relay strategy (:mod:`sarlink.engine.hooks`), and with the chain to a found
+target or without (``CHAIN``, ``on_detect = relay``), replacing the block of plug-in imports
 below, into a module of its own in the cache folder, named after the digest of every source it
 depends on (so an edit anywhere recompiles, and every process shares the compiled code).
 The same text also gives the kernel's stepping form (``build.kernel_for(..., stepping=True)``,
@@ -34,6 +35,7 @@ from sarlink.engine.params import (
     Params,
 )
 from sarlink.engine.records import NEVER, RunRecord
+from sarlink.engine.relays import chain as relay_chain
 from sarlink.engine.relays import flight as relay_flight
 
 # isort: off
@@ -49,6 +51,7 @@ from sarlink.engine.relays.none import prepare as relay_prepare
 from sarlink.engine.rules.none import prepare as rule_prepare
 
 RELAYS = False
+CHAIN = False
 RULE_DUE = False
 RULE_NEAR = False
 SCANS_RANGES = True
@@ -115,6 +118,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     if RELAYS:
         rws = relay_prepare(p, obs)
         relay_gx, relay_gy = aim_x.copy(), aim_y.copy()  # the strategy's points
+    if CHAIN:  # compiled only for on_detect = relay (build)
+        chain_x, chain_y = np.empty(0), np.empty(0)  # the chain's points, once found
+        heard = np.zeros(nw, dtype=np.uint64)
+        slot = np.full(n, -1, dtype=np.int64)  # the point each drone of the chain holds
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
@@ -193,6 +200,12 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if p.on_detect == REPORT and t_det >= 0.0:
             motion.report(k, p, t_not >= 0.0, detector, knows, mode, on_route, px, py, leave_x,
                           leave_y, rejoin, last_change)
+        if CHAIN and t_det >= 0.0:  # the detector holds, the knowers share out the chain
+            if t_det == t:
+                chain_x, chain_y = relay_chain.start(p, obs.rc, detector, mode, on_route, px,
+                                                     py, aim_x, aim_y, edges)
+            relay_chain.join(detector, knows, mode, on_route, px, py, adj, chain_x, chain_y,
+                             slot, aim_x, aim_y, heard, stack)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
         if RULE_DUE:
@@ -206,6 +219,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             relay_place(k, p, obs, rws, edges, relay_gx, relay_gy)
             relay_flight.steer(k, homing, p, px, py, hx, hy, mode, routed, relay_gx, relay_gy,
                                aim_x, aim_y, nhx, nhy, edges, nav)
+        if CHAIN:
+            relay_chain.steer(k, homing, p, px, py, hx, hy, mode, aim_x, aim_y, nhx, nhy,
+                              edges, nav)
         if polygon:  # the boundary rule on the polygon, and the ways round its holes
             area.polygon_rules(k, homing, p, px, py, nhx, nhy, mode, on_route, last_change,
                                edges, nav, rejoin, leave_x, leave_y, goal_x, goal_y, rng_turn)

@@ -10,6 +10,7 @@ from numba import njit
 
 from sarlink.engine.geometry import inside, turned, unit
 from sarlink.engine.params import (
+    CHAINING,
     DETECTOR_ONLY,
     LANDED,
     RELAYING,
@@ -206,8 +207,8 @@ def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarr
          wp_end: np.ndarray, leave_x: np.ndarray, leave_y: np.ndarray,
          rejoin: np.ndarray, aim_x: np.ndarray, aim_y: np.ndarray) -> None:
     """Move every drone ``V dt``: along its route (back to where it left it first, after
-    reporting), home (landing on arrival), to the BS to report (waiting there), a relay to
-    its aim (holding it on arrival), or on.
+    reporting), home (landing on arrival), to the BS to report (waiting there), a relay or a
+    drone of the chain to a found target to its aim (holding it on arrival), or on.
 
     Inlined: it draws no random numbers, and as a call (a dozen arrays, some 100 arguments)
     it cost some 5 % of a CovB run at N = 10.
@@ -246,7 +247,7 @@ def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarr
             else:
                 px[i] += step * hx[i]
                 py[i] += step * hy[i]
-        elif mode[i] == RELAYING:
+        elif mode[i] == RELAYING or mode[i] == CHAINING:
             dx, dy = aim_x[i] - px[i], aim_y[i] - py[i]
             if dx * dx + dy * dy <= step * step:
                 px[i], py[i] = aim_x[i], aim_y[i]

@@ -35,7 +35,7 @@ from sarlink.engine.codes import (
 )
 from sarlink.engine.critical_ranges import Critical, critical
 from sarlink.engine.hooks import RelayStrategy
-from sarlink.engine.params import REPORT, STOP_DETECTED, STOP_NOTIFIED, Params
+from sarlink.engine.params import CONTINUE, RELAY, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
 from sarlink.engine.radios import get_radio
 from sarlink.engine.radios.lognormal import fade_bias
@@ -134,9 +134,11 @@ class Prepared:
 
     @property
     def kernel(self) -> Any:
-        """The kernel compiled for this team's rule, the mission's radio model and the team's
-        relay strategy (if it has relays)."""
-        return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays)
+        """The kernel compiled for this team's rule, the mission's radio model, the team's
+        relay strategy (if it has relays) and its chain to a found target (if
+        ``on_detect = relay``)."""
+        return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays,
+                          chain=self.params.on_detect == RELAY)
 
     def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                   traced_at: float | None = None, scan_at: Sequence[float] = ()
@@ -228,11 +230,12 @@ class Prepared:
     def range_free(self) -> bool:
         """Whether the team flies the same at every communication range, as the seams declare
         it: the radio model's fades do not depend on ``r_c`` (the built-in log-normal model),
-        no drone reports (``on_detect = continue``), and every distributed drone (if any) runs
-        a rule declared ``range_free`` (CovB). Such a run can be flown once for all ranges
+        no drone reports or forms a chain to a found target (``on_detect = continue``: the
+        chain's points depend on ``r_c``), and every distributed drone (if any) runs a rule
+        declared ``range_free`` (CovB). Such a run can be flown once for all ranges
         (:meth:`run_ranges`)."""
         rule = self.steering.rule
-        return (get_radio(self.mission.radio).range_free and self.params.on_detect != REPORT
+        return (get_radio(self.mission.radio).range_free and self.params.on_detect == CONTINUE
                 and self.params.relays == 0
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 

@@ -39,6 +39,11 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
     if held.size:  # where each relay stood last while relaying
         ax.plot(held[:, 0], held[:, 1], marker="D", ms=8, mfc="tab:olive", mec="black",
                 ls="none")
+    chain = _legs(ax, result, Mode.CHAINING, "the chain to the found target",
+                  color="tab:red", ls=(0, (1, 1)), alpha=0.9)
+    if chain.size:  # where each drone of the chain stood last in it
+        ax.plot(chain[:, 0], chain[:, 1], marker="o", ms=7, mfc="tab:red", mec="black",
+                ls="none")
     ax.plot(bx, by, marker="^", ms=12, color="tab:blue", ls="none", label="base station")
     ax.plot(tx, ty, marker="X", ms=11, color="tab:red", ls="none", label="target")
     if result.t_detect is not None and result.detector is not None:

@@ -7,9 +7,11 @@ position, heading and route. Where it believes a drone it has not heard since is
 ``team.relay_estimate``:
 
 - ``reckoned``: dead reckoning from the last hearing, by what the drone was doing then: along
-  its route at ``V_m`` for a drone that flew one, straight home for one that flew home, else
-  on along its last heading at ``V_m`` (into the area): what the BS can know without hearing
-  it (a drone that has since found the target and turned home is still reckoned on its way);
+  its route at ``V_m`` for a drone that flew one, straight home for one that flew home, where
+  it was heard for a drone of the chain to a found target (it holds its point,
+  ``on_detect = relay``), else on along its last heading at ``V_m`` (into the area): what
+  the BS can know without hearing it (a drone that has since found the target and turned
+  home is still reckoned on its way);
 - ``heard``: where it was last heard. Such a point had a route to the BS, so the tree rarely
   needs a relay to reach it, and the relays hardly leave the BS (docs/model.md, Relays).
 """
@@ -22,7 +24,7 @@ from numba import njit
 from sarlink.engine.codes import Estimate
 from sarlink.engine.graph import has
 from sarlink.engine.observation import Observation
-from sarlink.engine.params import LANDED, RELAYING, REPORTING, RETURNING, Params
+from sarlink.engine.params import CHAINING, LANDED, RELAYING, REPORTING, RETURNING, Params
 from sarlink.engine.relays.placement import dist, into_area, plan
 
 HEARD = int(Estimate.HEARD)
@@ -57,9 +59,9 @@ def reckon(k: int, p: Params, obs: Observation, heard: np.ndarray, i: int, edges
     (:func:`~sarlink.engine.relays.placement.into_area`)."""
     x, y = heard[0, i], heard[1, i]
     travel = p.speed * p.dt * (k - heard[4, i])
-    if travel <= 0.0:
-        return x, y
     mode = int(heard[6, i])
+    if travel <= 0.0 or mode == CHAINING:  # a drone of the chain to a found target holds
+        return x, y
     if heard[7, i] != 0.0 and mode != REPORTING:
         w = int(heard[5, i])
         while w < obs.wp_end[i]:
