@@ -40,10 +40,13 @@ def fresh_registries(monkeypatch: pytest.MonkeyPatch) -> None:
         monkeypatch.setattr(registry, "_loaded", registry._loaded)
 
 
-KERNELS = [("mtsp", True, None), ("covb", False, None), ("conb", False, None),
-           ("concov", False, None), ("covb", False, "tree"), ("conb", False, "tree"),
-           ("mtsp", False, "tree")]
-"""The engine's kernels most test files fly (planner, with the range scan, relay strategy)."""
+KERNELS = [("mtsp", True, None, False), ("covb", False, None, False),
+           ("conb", False, None, False), ("concov", False, None, False),
+           ("covb", False, "tree", False), ("conb", False, "tree", False),
+           ("mtsp", False, "tree", False), ("covb", False, None, True),
+           ("mtsp", False, None, True), ("covb", False, "tree", True)]
+"""The engine's kernels most test files fly (planner, with the range scan, relay strategy,
+with the chain to a found target)."""
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
@@ -65,6 +68,6 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     os.environ["SARLINK_CACHE_DIR"] = str(root / "sarlink-cache")
     with ProcessPoolExecutor(min(int(workers), len(KERNELS)),
                              mp_context=multiprocessing.get_context("spawn")) as pool:
-        for done in [pool.submit(warm_up, planner, "disc", ranges=ranges, relays=relays)
-                     for planner, ranges, relays in KERNELS]:
+        for done in [pool.submit(warm_up, planner, "disc", ranges=ranges, relays=relays,
+                                 chain=chain) for planner, ranges, relays, chain in KERNELS]:
             done.result()
