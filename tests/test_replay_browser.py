@@ -50,6 +50,14 @@ def relayed(tmp_path_factory) -> tuple[Replay, Path]:
     return page, page.write(tmp_path_factory.mktemp("replay") / "relays.html")
 
 
+@pytest.fixture(scope="module")
+def chained(tmp_path_factory) -> tuple[Replay, Path]:
+    """CovB's eight drones searching, then relaying: detected at 280 s, notified at 811 s."""
+    mission = Mission.build(planner="covb", drones=8, rc=500.0, on_detect="relay")
+    page = replay(simulate(mission, seed=0, run=2, trajectory=True), mission)
+    return page, page.write(tmp_path_factory.mktemp("replay") / "chain.html")
+
+
 def _load(browser, path: Path) -> None:
     open_page(browser, path)
     browser.get_log("browser")  # start each test's console record afresh
@@ -149,12 +157,36 @@ def test_relays_are_drawn_relaying_in_their_own_colour_holding_the_chain(browser
     assert [d["mode"] for d in drawn["drones"]] == ["searching"] * 5 + ["relaying"] * 3
     assert "relaying" in _coloured_by_mode(browser, drawn)
     traj = page.panels[0].result.trajectory
-    k = int(np.searchsorted(traj.t, 300.0))
-    routed = np.append(traj.bs_route[k], True)  # the BS, node 8
-    chain = np.triu(traj.links[k, :9, :9] & routed[:, None] & routed[None, :], 1)
+    chain = _bs_component_links(traj, int(np.searchsorted(traj.t, 300.0)))
     assert chain[5:].any() or chain[:, 5:].any()  # a relay's link in the BS's component
     assert drawn["componentLinks"] == int(chain.sum())
     assert "N = 8 (3 relays)" in browser.find_element(By.TAG_NAME, "h1").text
+    assert _console_errors(browser) == []
+
+
+def _bs_component_links(traj, k: int) -> np.ndarray:
+    """The links at step ``k`` between nodes the BS's component holds (the BS is the last)."""
+    n = traj.positions.shape[1]
+    routed = np.append(traj.bs_route[k], True)
+    return np.triu(traj.links[k, :n + 1, :n + 1] & routed[:, None] & routed[None, :], 1)
+
+
+def test_a_chain_to_a_found_target_is_drawn_chaining_in_its_own_colour(browser, chained
+                                                                       ) -> None:
+    page, path = chained
+    result = page.panels[0].result
+    _load(browser, path)
+    assert "drone chaining" in browser.find_element(By.ID, "legend").text
+    assert "on detect: relay" in browser.find_element(By.TAG_NAME, "h1").text
+    (drawn,) = _seek(browser, result.t_notify)
+    _check_state(drawn, page, 0, result.t_notify)
+    assert "chaining" in _coloured_by_mode(browser, drawn)
+    traj = result.trajectory
+    k = int(np.searchsorted(traj.t, result.t_notify))
+    chaining = np.append(traj.mode[k] == Mode.CHAINING, False)
+    links = _bs_component_links(traj, k)
+    assert links[chaining].any() or links[:, chaining].any()  # the chain the BS hears by
+    assert drawn["componentLinks"] == int(links.sum())
     assert _console_errors(browser) == []
 
 

@@ -17,10 +17,13 @@ __all__ = ["describe", "modes", "scene", "setting"]
 
 
 def setting(mission: Mission) -> str:
-    """Team size (and its relays), range and the imperfections switched on, for titles."""
+    """Team size (and its relays), range, what a drone does on detecting the target if not the
+    paper's (continue), and the imperfections switched on, for titles."""
     team = mission.team
     relays = f" ({team.relays} relay{'s' * (team.relays > 1)})" if team.relays else ""
     parts = [f"N = {team.drones}{relays}", f"r_c = {mission.channel.rc:g} m"]
+    if team.on_detect != "continue":
+        parts.append(f"on detect: {team.on_detect}")
     if mission.channel.sigma > 0:
         parts.append(f"σ = {mission.channel.sigma:g} dB")
     if mission.sensing.p_miss > 0:
