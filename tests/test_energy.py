@@ -158,7 +158,7 @@ def test_energy_models_are_a_plug_in_kind() -> None:
     with pytest.raises(ConfigError, match=r"energy model name 'zeng2019' is taken \(from "
                        r"sarlink\); pass replace=True"):
         register_energy_model(replace(RODRIGUES2021, name="zeng2019"))
-    heavy = register_energy_model(replace(ZENG2019, name="heavy", params=(
+    register_energy_model(replace(ZENG2019, name="heavy", params=(
         *rotor.ZENG2019[:-1], 2.0)))
     assert ENERGY_MODELS.entries()["heavy"].origin == "code (test_energy)"
     assert get_energy_model("heavy").power(5.0) == pytest.approx(2 * ZENG2019.power(5.0))
@@ -219,6 +219,6 @@ def test_bad_battery_values_are_refused(params: dict[str, float], words: list[st
 
 
 def test_an_unknown_energy_model_is_refused_where_work_starts() -> None:
-    with pytest.raises(ConfigError, match="battery.energy_model: unknown energy model 'lipo'; "
-                       "known: none, zeng2019, rodrigues2021"):
+    with pytest.raises(ConfigError, match=r"battery\.energy_model: unknown energy model "
+                       "'lipo'; known: none, zeng2019, rodrigues2021"):
         check_mission(Mission.build(energy_model="lipo"))

@@ -18,10 +18,10 @@ import geojson_validator
 import numpy as np
 import pytest
 from geojson_pydantic import FeatureCollection
-from mavlink_vehicle import upload
 from pymavlink import mavutil, mavwp
 from shapely.geometry import LineString, MultiPoint, Polygon, shape
 
+from mavlink_vehicle import upload
 from sarlink import ConfigError, Mission, simulate
 from sarlink.config.region import area_polygon
 from sarlink.export import RELAY_NOTE, TRACK_POINTS, export_mission, mission_frame

@@ -6,6 +6,7 @@ route no sortie can fly is refused in one line."""
 
 from __future__ import annotations
 
+import itertools
 import json
 from pathlib import Path
 
@@ -92,7 +93,7 @@ def test_sorties_resume_where_the_last_turned_home_and_search_the_whole_route(
         path = np.vstack([valley.area.bs_xy, route])
         cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(path, axis=0).T))])
         assert sorties[0].start == 0.0 and sorties[-1].end == pytest.approx(cum[-1])
-        for before, after in zip(sorties, sorties[1:], strict=False):
+        for before, after in itertools.pairwise(sorties):
             assert after.start == pytest.approx(before.end - RESUME_OVERLAP)
             resume = np.array([np.interp(after.start, cum, path[:, k]) for k in (0, 1)])
             assert np.hypot(*(after.waypoints - resume).T).min() < 1e-6

@@ -49,7 +49,8 @@ def export(
                         f"{firmware}: files in {out}", title_justify="left")
     model = mission.energy_model
     energy = get_energy_model(model).draws_power
-    battery = mission.battery.battery_wh is not None
+    capacity = mission.battery.battery_wh
+    battery = capacity is not None
     columns = ["drone", "flies", *(["sortie"] * battery), "length",
                "duration" if energy else "flight time", *(["energy"] * energy), "files"]
     for name in columns:
@@ -70,10 +71,10 @@ def export(
                           f"{time / 60:.1f} min", *([f"{s.energy / 3600:.1f} Wh"] * energy),
                           _names(s.files))
     console.print(table)
-    if battery:
+    if capacity is not None:
         b = mission.battery
-        console.print(f"battery {b.battery_wh:g} Wh, {model}: a sortie uses at most "
-                      f"{b.battery_wh * (1 - b.reserve):.1f} Wh ({1 - b.reserve:.0%}), each "
+        console.print(f"battery {capacity:g} Wh, {model}: a sortie uses at most "
+                      f"{capacity * (1 - b.reserve):.1f} Wh ({1 - b.reserve:.0%}), each "
                       f"resuming {RESUME_OVERLAP:g} m before where the last one turned home; "
                       f"with {b.swap_time:g} s per battery swap, "
                       + ", ".join(f"drone {d.drone} is done after "
