@@ -163,14 +163,20 @@ FLAGS: tuple[Flag, ...] = _rows(
      {"plan"}),
     ("--population", int, "GA population", "population", {"plan"}),
     ("--iterations", int, "GA iterations", "iterations", {"plan"}),
-    ("--battery-wh", float, "battery capacity, Wh: the export splits each route into sorties "
-     "that fit it", "battery_wh", {"export"}),
+    ("--battery-wh", float, "battery capacity, Wh: drones swap batteries at the BS when it "
+     "runs low; the export splits each route into sorties that fit it", "battery_wh",
+     {*ONE_RUN, "design", "export"}),
     ("--energy-model", str, "the power a drone draws as it flies: "
      f"{', '.join(energy_model_names())} (default: none without --battery-wh, "
-     f"{ENERGY_MODEL_WITH_BATTERY} with it)", "energy_model", {"export"}),
+     f"{ENERGY_MODEL_WITH_BATTERY} with it)", "energy_model", {*ONE_RUN, "design", "export"}),
     ("--reserve", float, "fraction of the battery kept in reserve: a sortie uses at most the "
-     "rest", "reserve", {"export"}),
-    ("--swap-time", float, "time to swap a battery at the BS, s", "swap_time", {"export"}),
+     "rest", "reserve", {*ONE_RUN, "design", "export"}),
+    ("--swap-time", float, "time to swap a battery at the BS, s", "swap_time",
+     {*ONE_RUN, "design", "export"}),
+    ("--spares", int, "spare batteries at the BS (default: as many as needed)", "spares",
+     {*ONE_RUN, "design"}),
+    ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
+     "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN | {"design"}, apply=_read),

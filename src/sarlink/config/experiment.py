@@ -39,7 +39,8 @@ ADDED_LATER: dict[str, dict[str, Any]] = {
              "relay_estimate": "reckoned"},
     "channel": {"radio": None, "decorrelation": 50.0},
     "readings": EARLIER_CHOICES,
-    "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0},
+    "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0,
+                "spares": None},
 }
 """Parameters added after results were first stored, with the value that keeps the earlier
 behaviour: left out of the hash at that value, so earlier results folders stay valid (a group

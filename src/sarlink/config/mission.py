@@ -275,6 +275,10 @@ class Battery(Checked):
     swap_time: float = Field(
         120.0, gt=0, description="time to land, swap the battery and take off again at the "
         "BS, s")
+    spares: int | None = Field(
+        None, ge=0, strict=True,
+        description="spare batteries at the BS, shared by the team; None: as many as needed. "
+        "A drone that lands for a swap when none is left stays parked")
 
 
 class MtspSettings(Checked):

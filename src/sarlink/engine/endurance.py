@@ -7,8 +7,10 @@ speeds (``p.fly_w``, ``p.hover_w``), evaluated once in Python (:mod:`sarlink.ene
 in which a drone moved costs ``fly_w dt``, one in which it held ``hover_w dt``. A take-off
 costs the climb to the mission's altitude (``p.climb_j``), a landing the descent
 (``p.descent_j``). A drone turns home at the first step at which what it has above the reserve
-no longer pays for the flight home (round the holes on a polygon area), two steps more and the
-descent. Landed with a swap due, it waits ``p.swap_steps`` steps on the ground (a spare from the
+no longer pays for the flight home (round the holes on a polygon area) three steps more, at
+the larger of the two powers, and the descent: it lands with the reserve intact whether it
+flew or held in the step before it turned (the margin the bound needs: the step in which it
+decides, the step of arrival, and one step's draw it may have made since the last check). Landed with a swap due, it waits ``p.swap_steps`` steps on the ground (a spare from the
 BS's stock, ``p.spares``; ``-1``: unlimited; none left: it stays parked) and takes off again
 with a full battery, in the role it left: a route drone flies back to where it left its route,
 a distributed drone decides under its rule at once, a relay takes its place again.
@@ -52,10 +54,12 @@ def turn_home(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.
               was_route: np.ndarray, leave_x: np.ndarray, leave_y: np.ndarray,
               rejoin: np.ndarray, edges: np.ndarray, nav: np.ndarray) -> None:
     """Every airborne drone whose energy above the reserve no longer pays for the flight home
-    (two steps more, and the descent) turns home to swap its battery, remembering its role;
+    (three steps more at the larger power, and the descent) turns home to swap its battery,
+    remembering its role;
     a route drone remembers where it left its route (unless it left it already to report)."""
     step = p.speed * p.dt
     polygon = edges.shape[0] > 0
+    power = max(p.fly_w, p.hover_w)
     for i in range(mode.shape[0]):
         if mode[i] == LANDED or mode[i] == RETURNING:
             continue
@@ -66,7 +70,7 @@ def turn_home(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.
             dx, dy = p.bs_x - px[i], p.bs_y - py[i]
             home = math.sqrt(dx * dx + dy * dy)
             ux, uy = unit(dx, dy, hx[i], hy[i])
-        need = p.fly_w * (home / p.speed + 2.0 * p.dt) + p.descent_j
+        need = power * (home / p.speed + 3.0 * p.dt) + p.descent_j
         if energy[i] - p.reserve_j > need:
             continue
         resume[i] = RELAYING if mode[i] == RELAYING else SEARCHING  # a chain drone: a free knower again
@@ -93,7 +97,6 @@ def ground(k: int, homing: bool, p: Params, mode: np.ndarray, on_route: np.ndarr
         if mode[i] != LANDED or resume[i] == NO_SWAP:
             continue
         if ground_until[i] < 0:
-            used[i] += p.descent_j
             if spares[0] == 0:
                 resume[i] = NO_SWAP
                 continue
@@ -129,15 +132,18 @@ def keep(px: np.ndarray, py: np.ndarray, mode: np.ndarray, bx: np.ndarray, by: n
 
 
 @njit(cache=True, error_model="numpy")
-def drain(p: Params, px: np.ndarray, py: np.ndarray, bx: np.ndarray, by: np.ndarray,
-          airborne: np.ndarray, energy: np.ndarray, used: np.ndarray) -> None:
+def drain(p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray, bx: np.ndarray,
+          by: np.ndarray, airborne: np.ndarray, energy: np.ndarray, used: np.ndarray) -> None:
     """The step's energy: ``fly_w dt`` for a drone in the air that moved, ``hover_w dt`` for
-    one that held where it was (a relay at its point, a reporter over the BS)."""
+    one that held where it was (a relay at its point, a reporter over the BS), and the descent
+    for one that landed."""
     for i in range(energy.shape[0]):
         if not airborne[i]:
             continue
         moved = px[i] != bx[i] or py[i] != by[i]
         drawn = (p.fly_w if moved else p.hover_w) * p.dt
+        if mode[i] == LANDED:
+            drawn += p.descent_j
         energy[i] -= drawn
         used[i] += drawn
 

@@ -248,7 +248,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         motion.move(p, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y,
                     rejoin, aim_x, aim_y)
         if ENERGY:
-            endurance.drain(p, px, py, bx, by, airborne, energy, used)
+            endurance.drain(p, px, py, mode, bx, by, airborne, energy, used)
 
     if ENERGY:
         flown = records.Sorties(sorties, ground_s, used)
