@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -170,7 +171,14 @@ def test_a_battery_too_small_for_a_round_trip_is_refused_and_nothing_is_written(
         tmp_path: Path, valley: Mission) -> None:
     small = valley.replace(battery_wh=valley.battery.battery_wh / 2)
     with pytest.raises(ConfigError, match=r"--battery-wh .*: drone 0's route cannot be flown "
-                       r"in sorties of this battery: searching at .* km from the BS takes") as err:
+                       r"in sorties of this battery: its farthest waypoint, ([\d.]+) km from "
+                       r"the BS, takes ([\d.]+) Wh out and back .* may use ([\d.]+) Wh") as err:
         export_mission(small, tmp_path / "plans")
     assert "\n" not in str(err.value) and "--speed nearer" in str(err.value)
+    found = re.search(r"farthest waypoint, ([\d.]+) km .* takes ([\d.]+) Wh .* may use "
+                      r"([\d.]+) Wh", str(err.value))
+    assert found is not None
+    far, need, allowed = map(float, found.groups())
+    assert need > allowed == pytest.approx(small.battery.battery_wh * 0.8, abs=0.05)
+    assert need == pytest.approx(_energy(small, 2000 * far, 50.0) / 3600, abs=0.1)
     assert not (tmp_path / "plans").exists()

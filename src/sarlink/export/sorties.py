@@ -159,16 +159,22 @@ def _last_fit(line: _Route, start: float, reach: float) -> float:
 
 def _too_small(mission: Mission, model: EnergyModel, drone: int, line: _Route, start: float,
                out: float, altitude: float, budget: float) -> ConfigError:
-    """The one line that refuses a route: the round trip it could not fit."""
+    """The one line that refuses a route: the round trip it could not fit, to the route's
+    farthest waypoint (the way the drone flies) if that one does not fit, else to where the
+    sortie could not search on past the overlap."""
     b, speed = mission.battery, mission.team.speed
-    step = min(start + RESUME_OVERLAP, line.length)
-    need = Flight(out + (step - start) + line.home(step), speed, altitude).energy(model)
+    far = max(line.home(float(s)) for s in line.cum)
+    need = Flight(2 * far, speed, altitude).energy(model)
+    where = f"its farthest waypoint, {far / 1000:.2f} km from the BS,"
+    if need <= budget:
+        step = min(start + RESUME_OVERLAP, line.length)
+        need = Flight(out + (step - start) + line.home(step), speed, altitude).energy(model)
+        where = f"searching on at {out / 1000:.2f} km from the BS"
     best = model.range_speed()
     faster = f", a --speed nearer {best:.1f} m/s (the longest range)" if speed < best else ""
     return ConfigError(
         f"--battery-wh {b.battery_wh:g}: drone {drone}'s route cannot be flown in sorties of "
-        f"this battery: searching at {out / 1000:.2f} km from the BS takes {need / 3600:.1f} Wh "
-        f"out and back ({model.name} at {speed:g} m/s, with the climb to {altitude:g} m and "
-        f"the landing), and a sortie may use {budget / 3600:.1f} Wh ({1 - b.reserve:.0%} of "
-        f"{b.battery_wh:g} Wh); a larger battery{faster}, a lower --altitude or a smaller "
-        "--reserve")
+        f"this battery: {where} takes {need / 3600:.1f} Wh out and back ({model.name} at "
+        f"{speed:g} m/s, with the climb to {altitude:g} m and the landing), and a sortie may "
+        f"use {budget / 3600:.1f} Wh ({1 - b.reserve:.0%} of {b.battery_wh:g} Wh); a larger "
+        f"battery{faster}, a lower --altitude or a smaller --reserve")
