@@ -445,10 +445,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
 
     def swaps_and_turns(k: int, t: float, new: list[float]) -> None:
         """Batteries at step ``k``: a drone landed for a swap takes a spare (none left: it
-        stays), waits the swap time on the ground and takes off in the role it left (unless
-        the flight budget is due: it would only turn home); then every airborne drone whose
-        energy above the reserve no longer pays for the flight home and three steps more, at
-        the larger of its flying and holding power, and the descent, turns home, a route drone remembering where it left its route."""
+        stays), waits the swap time on the ground and takes off in the role it left (unless the
+        flight budget is due: it would only turn home); then every airborne drone whose energy
+        above the reserve no longer pays for the flight home and three steps more, at the larger
+        of its flying and holding power, and the descent, turns home, a route drone remembering
+        where it left its route."""
         nonlocal spares
         homing = (mission.team.flight_time - t) - home_max / v < 2 * dt
         for i in range(n):

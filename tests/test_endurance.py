@@ -5,8 +5,6 @@ what must not take batteries (the range-free shortcut, the stepping env)."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings

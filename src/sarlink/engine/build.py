@@ -70,10 +70,10 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel,
     and ``relays`` (``None``: a team without relays, ``RELAYS = False``); ``chain``: the team
     forms a chain to a found target (``on_detect = relay``, ``CHAIN``; else that code is not
     compiled); ``energy``: its drones fly on batteries (``ENERGY``,
-    :mod:`sarlink.engine.endurance`; else that code is not compiled). The range scan (:mod:`sarlink.engine.critical_ranges`, inlined: most of a
-    kernel's compile time after the rule) is compiled only into a kernel whose team may fly
-    the same at every range (no relays and no chain: their points depend on the range), and
-    if ``scans_ranges``."""
+    :mod:`sarlink.engine.endurance`; else that code is not compiled). The range scan
+    (:mod:`sarlink.engine.critical_ranges`, inlined: most of a kernel's compile time after the
+    rule) is compiled only into a kernel whose team may fly the same at every range (no relays
+    and no chain: their points depend on the range), and if ``scans_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}
     defaults: dict[str, Callable[..., Any]] = {
         "rule_prepare": none.prepare, "rule_due": none.due, "rule_decide": none.decide}
@@ -210,7 +210,8 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel,
     decisions; ``rule`` then gives only the schedule (``prepare``, ``due``, ``near``): its
     ``decide`` is not called.
     """
-    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy)  # disc, shadowing share
+    # disc and shadowing share a kernel
+    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy)
     if key not in _MEMO:
         if stepping and rule is not None:
             rule = dataclasses.replace(rule, decide=none.decide)

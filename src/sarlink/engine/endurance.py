@@ -3,17 +3,18 @@ that resumes (docs/model.md, Endurance). Compiled only into the kernels of teams
 battery (``ENERGY``, :mod:`sarlink.engine.build`): a team without one flies today's kernel.
 
 A drone flies at ``V_m`` or holds where it is, so its power is the energy model's at those two
-speeds (``p.fly_w``, ``p.hover_w``), evaluated once in Python (:mod:`sarlink.energy`); a step
+speeds (``p.fly_w``, ``p.hover_w``), evaluated once in Python (:mod:`sarlink.engine.energy`); a step
 in which a drone moved costs ``fly_w dt``, one in which it held ``hover_w dt``. A take-off
 costs the climb to the mission's altitude (``p.climb_j``), a landing the descent
 (``p.descent_j``). A drone turns home at the first step at which what it has above the reserve
-no longer pays for the flight home (round the holes on a polygon area) three steps more, at
-the larger of the two powers, and the descent: it lands with the reserve intact whether it
-flew or held in the step before it turned (the margin the bound needs: the step in which it
-decides, the step of arrival, and one step's draw it may have made since the last check). Landed with a swap due, it waits ``p.swap_steps`` steps on the ground (a spare from the
-BS's stock, ``p.spares``; ``-1``: unlimited; none left: it stays parked) and takes off again
-with a full battery, in the role it left: a route drone flies back to where it left its route,
-a distributed drone decides under its rule at once, a relay takes its place again.
+no longer pays for the flight home (round the holes on a polygon area) three steps more, at the
+larger of the two powers, and the descent: it lands with the reserve intact whether it flew or
+held in the step before it turned (the margin the bound needs: the step in which it decides, the
+step of arrival, and one step's draw it may have made since the last check). Landed with a swap
+due, it waits ``p.swap_steps`` steps on the ground (a spare from the BS's stock, ``p.spares``;
+``-1``: unlimited; none left: it stays parked) and takes off again with a full battery, in the
+role it left: a route drone flies back to where it left its route, a distributed drone decides
+under its rule at once, a relay takes its place again.
 """
 
 from __future__ import annotations
@@ -73,7 +74,8 @@ def turn_home(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.
         need = power * (home / p.speed + 3.0 * p.dt) + p.descent_j
         if energy[i] - p.reserve_j > need:
             continue
-        resume[i] = RELAYING if mode[i] == RELAYING else SEARCHING  # a chain drone: a free knower again
+        # a relay comes back a relay; a drone of the chain, a free knower
+        resume[i] = RELAYING if mode[i] == RELAYING else SEARCHING
         if on_route[i]:
             was_route[i] = True
             on_route[i] = False
@@ -151,7 +153,4 @@ def drain(p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray, bx: np.nd
 @njit(cache=True, error_model="numpy")
 def pending(resume: np.ndarray) -> bool:
     """Whether a landed drone may still take off again (its swap is due or under way)."""
-    for i in range(resume.shape[0]):
-        if resume[i] != NO_SWAP:
-            return True
-    return False
+    return bool((resume != NO_SWAP).any())

@@ -250,7 +250,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if ENERGY:
             endurance.drain(p, px, py, mode, bx, by, airborne, energy, used)
 
-    if ENERGY:
+    if ENERGY:  # noqa: SIM108 (a statement Numba prunes: without ENERGY, sorties is unbound)
         flown = records.Sorties(sorties, ground_s, used)
     else:
         flown = records.one_sortie(n)

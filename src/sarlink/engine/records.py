@@ -51,7 +51,7 @@ class Sorties(NamedTuple):
     """Each drone's sorties, time on the ground for battery swaps (s) and energy drawn (J,
     NaN for a team without a battery, which flies one sortie: :mod:`sarlink.engine.endurance`)."""
 
-    count: np.ndarray
+    number: np.ndarray
     ground: np.ndarray
     energy: np.ndarray
 

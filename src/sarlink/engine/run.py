@@ -332,16 +332,17 @@ def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
         immediate=rec.immediate, detector=None if rec.detector < 0 else rec.detector,
         checkpoints=rec.checkpoints, reach_cum=rec.reach_cum, connected_cum=rec.conn_cum,
         depth=rec.depth, farthest=rec.farthest, trajectory=trajectory,
-        **({"sorties": flown.count, "ground_time": flown.ground, "energy": flown.energy}
+        **({"sorties": flown.number, "ground_time": flown.ground, "energy": flown.energy}
            if batteries else {}),
     )
 
 
 def battery_params(mission: Mission) -> dict[str, Any]:
     """The kernel's battery scalars (:class:`~sarlink.engine.params.Params`) for ``mission``:
-    the energy model's power at ``V_m`` and hovering, a take-off's climb and a landing's
-    descent to and from the mission's altitude (at :data:`~sarlink.engine.energy.CLIMB_RATE`
-    and :data:`~sarlink.engine.energy.DESCENT_RATE`, as export predicts), the capacity and reserve in joules; ``battery_j = inf`` without a battery."""
+    the energy model's power at ``V_m`` and hovering, a take-off's climb and a landing's descent
+    to and from the mission's altitude (at :data:`~sarlink.engine.energy.CLIMB_RATE` and
+    :data:`~sarlink.engine.energy.DESCENT_RATE`, as export predicts), the capacity and reserve
+    in joules; ``battery_j = inf`` without a battery."""
     b = mission.battery
     if b.battery_wh is None:
         return {"battery_j": math.inf, "reserve_j": 0.0, "fly_w": 0.0, "hover_w": 0.0,
