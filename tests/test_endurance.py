@@ -5,12 +5,16 @@ what must not take batteries (the range-free shortcut, the stepping env)."""
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from typer.testing import CliRunner
 
 from sarlink import Mission, simulate
+from sarlink.cli import app
 from sarlink.config import ConfigError
 from sarlink.engine.codes import Mode
 from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
@@ -20,8 +24,9 @@ from sarlink.simulation import prepare
 from test_reference import agreeing_runs
 
 ENDURANCE_RUNS = 12
-BATTERY = {"battery_wh": 12.0, "energy_model": "zeng2019", "swap_time": 60.0, "altitude": 40.0}
-"""A battery of some six minutes at 5 m/s under Zeng's model: several sorties in a run."""
+BATTERY = {"battery_wh": 20.0, "energy_model": "zeng2019", "swap_time": 60.0, "altitude": 40.0}
+"""A battery of some five minutes of flight at 5 m/s under Zeng's model, after the climb to
+40 m and the descent: several sorties in a run."""
 ENDURANCE_CASES = {
     "covb": {"planner": "covb"},
     "covb-relays": {"planner": "covb", "relays": 2},
@@ -156,5 +161,19 @@ def test_a_team_without_a_battery_flies_today_s_kernel() -> None:
 
 def test_the_stepping_env_refuses_batteries_in_one_line() -> None:
     mission = Mission.build(planner="covb", drones=4, **BATTERY)
-    with pytest.raises(ConfigError, match=r"^battery.battery_wh = 12: sarlink.env .*$"):
+    with pytest.raises(ConfigError, match=r"^battery.battery_wh = 20: sarlink.env .*$"):
         stepping_mission(mission)
+
+
+def test_simulate_prints_each_drone_s_sorties_ground_time_and_energy() -> None:
+    """``sarlink simulate`` on a battery: the JSON carries the run's own records."""
+    out = CliRunner().invoke(app, ["simulate", "--planner", "covb", "--drones", "4", "--td",
+                                   "1500", "--battery-wh", "20", "--energy-model", "zeng2019",
+                                   "--swap-time", "60", "--altitude", "40", "--json"])
+    assert out.exit_code == 0, out.output
+    data = json.loads(out.stdout)
+    mission = Mission.build(planner="covb", drones=4, horizon=1500.0, **BATTERY)
+    result = simulate(mission, seed=data["seed"], run=data["run"])
+    assert result.sorties is not None and result.energy is not None
+    assert data["sorties"] == result.sorties.tolist() and max(data["sorties"]) >= 2
+    assert data["energy_wh"] == pytest.approx(result.energy / 3600.0, abs=1e-3)
