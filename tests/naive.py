@@ -443,13 +443,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             aim[i] = clamp(points[i]) if i in routed else bs
             fly_to_aim(i, t, new)
 
-    def swaps_and_turns(k: int, t: float, new: list[float]) -> None:
-        """Batteries at step ``k``: a drone landed for a swap takes a spare (none left: it
-        stays), waits the swap time on the ground and takes off in the role it left (unless the
-        flight budget is due: it would only turn home); then every airborne drone whose energy
-        above the reserve no longer pays for the flight home and three steps more, at the larger
-        of its flying and holding power, and the descent, turns home, a route drone remembering
-        where it left its route."""
+    def swaps(k: int, t: float) -> None:
+        """Batteries at the start of step ``k``: a drone landed for a swap takes a spare (none
+        left: it stays), waits the swap time on the ground and takes off in the role it left
+        (unless the flight budget is due: it would only turn home), and so observes the step
+        in the air."""
         nonlocal spares
         homing = (mission.team.flight_time - t) - home_max / v < 2 * dt
         for i in range(n):
@@ -472,6 +470,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             used[i] += climb
             sorties[i] += 1
             last_change[i] = t - ts  # a distributed drone decides at once
+
+    def turns(new: list[float]) -> None:
+        """Every airborne drone whose energy above the reserve no longer pays for the flight
+        home and three steps more, at the larger of its flying and holding power, and the
+        descent, turns home, a route drone remembering where it left its route."""
         for i in range(n):
             if mode[i] in ("landed", "returning"):
                 continue
@@ -488,6 +491,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     heard = [(bs[0], bs[1], heading[i], 0, 0, mode[i]) for i in range(n)]
     for k in range(steps + 1):
         t = k * dt
+        if battery:
+            swaps(k, t)
         # observe
         if mission.channel.sigma > 0 and readings.shadowing == "correlated":
             # Gudmundson: each drone end flies v dt per step; exp(-x / d_c) over x flown
@@ -548,7 +553,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             form_the_chain(t, links)
 
         if battery:
-            swaps_and_turns(k, t, new)
+            turns(new)
 
         routed_next: set[int] | None = None
         continuous = rule and alpha < 1 and readings.conb_check == "continuous"

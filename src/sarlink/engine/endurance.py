@@ -91,10 +91,11 @@ def ground(k: int, homing: bool, p: Params, mode: np.ndarray, on_route: np.ndarr
            last_change: np.ndarray, energy: np.ndarray, resume: np.ndarray,
            was_route: np.ndarray, ground_until: np.ndarray, sorties: np.ndarray,
            ground_s: np.ndarray, used: np.ndarray, spares: np.ndarray) -> None:
-    """Every drone landed for a swap at step ``k``: a swap begins on landing if the BS has a
-    spare (``spares[0]``, ``-1``: unlimited; else the drone stays parked), counts its time on
-    the ground, and ends with a take-off in the role the drone left, unless the team's flight
-    budget is due (``homing``: the drone would only turn home again)."""
+    """Every drone landed for a swap, at the start of step ``k`` (so that a drone taking off
+    observes the step in the air and its rule decides on what it observes): a swap begins on
+    landing if the BS has a spare (``spares[0]``, ``-1``: unlimited; else the drone stays
+    parked), counts its time on the ground, and ends with a take-off in the role the drone
+    left, unless the team's flight budget is due (``homing``: it would only turn home again)."""
     for i in range(mode.shape[0]):
         if mode[i] != LANDED or resume[i] == NO_SWAP:
             continue

@@ -149,6 +149,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         t = k * p.dt
         due = ci  # the first checkpoint at or after this step
         ci = records.take_checkpoints(k, cp_steps, ci, reach_cum, conn_cum, acc_reach, acc_conn)
+        if ENERGY:  # swaps on the ground; a drone that takes off observes this step airborne
+            endurance.ground(k, (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt, p, mode,
+                             on_route, last_change, energy, resume, was_route, ground_until,
+                             sorties, ground_s, used, spares)
         # ---- observe: sense, link, flood, notify, account ----
         radio_update(thr2, p, rp, k, rng_shadow)
         first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
@@ -214,9 +218,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                                      py, aim_x, aim_y, edges)
             relay_chain.join(detector, knows, mode, on_route, px, py, adj, chain_x, chain_y,
                              slot, aim_x, aim_y, heard, stack)
-        if ENERGY:  # swaps on the ground, then who turns home to swap
-            endurance.ground(k, homing, p, mode, on_route, last_change, energy, resume,
-                             was_route, ground_until, sorties, ground_s, used, spares)
+        if ENERGY:  # who turns home to swap
             endurance.turn_home(p, px, py, hx, hy, mode, on_route, energy, resume, was_route,
                                 leave_x, leave_y, rejoin, edges, nav)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
