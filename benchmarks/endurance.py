@@ -5,8 +5,9 @@ costs.
 A model measurement on the paper's setting (the 4 km square, the BS at its centre, r = 500 m,
 V_m = 5 m/s, r_c = 500 m), flown to 8000 s with the flight budget T_max raised to match (the
 paper's 4000 s would end the tours before the batteries matter), common random numbers
-(seed 2024, runs 0 .. RUNS-1 in every row). The battery holds 25 minutes of flight at 5 m/s
-under Zeng's model (its capacity is that power times 1500 s), with the default reserve (0.2)
+(seed 2024, runs 0 .. RUNS-1 in every row). The battery holds 25 minutes of hover under
+Zeng's model (its capacity is the hover power times 1500 s, as docs/missions.md's "25-minute
+battery"), with the default reserve (0.2)
 and swap time (120 s); "no swap" has no spare at the BS. Then the time per run of CovB's
 N_m = 10 with and without that battery (the same runs, each kernel compiled and warmed
 first). Writes ``benchmarks/results/endurance.md``.
@@ -36,9 +37,9 @@ MODEL = "zeng2019"
 MINUTES = 25.0
 
 
-def battery_wh(speed: float = 5.0) -> float:
-    """The capacity that flies ``MINUTES`` at ``speed`` under :data:`MODEL`, Wh."""
-    return get_energy_model(MODEL).power(speed) * MINUTES * 60.0 / 3600.0
+def battery_wh() -> float:
+    """The capacity that hovers ``MINUTES`` under :data:`MODEL`, Wh."""
+    return get_energy_model(MODEL).power(0.0) * MINUTES * 60.0 / 3600.0
 
 
 TEAMS: dict[str, dict[str, Any]] = {
@@ -87,8 +88,9 @@ def main(runs: int) -> str:
     wh = battery_wh()
     lines = [f"{runs} runs per row, seed {SEED}: the paper's 2-drone mTSP team at r_c = 500 m "
              f"on the default square, flown to {HORIZON:g} s (T_max = {HORIZON:g} s). Battery: "
-             f"{wh:.1f} Wh, {MINUTES:g} minutes at 5 m/s under {MODEL} "
-             f"({get_energy_model(MODEL).power(5.0):.1f} W), reserve 0.2, swap 120 s. P_s(t_d) "
+             f"{wh:.1f} Wh, {MINUTES:g} minutes of hover under {MODEL} "
+             f"({get_energy_model(MODEL).power(0.0):.1f} W; "
+             f"{get_energy_model(MODEL).power(5.0):.1f} W at 5 m/s), reserve 0.2, swap 120 s. P_s(t_d) "
              "= share of runs notified by t_d (± one binomial standard error); sorties and "
              "ground time: per drone, mean over the runs.", "",
              "| team | " + " | ".join(f"P_s({td:g} s)" for td in TDS)
