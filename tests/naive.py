@@ -654,7 +654,8 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         if battery:  # the step's energy: flying, or holding where it was
             for i in range(n):
                 if before[i] is not None:
-                    drawn = (fly_w if pos[i] != before[i] else hover_w) * dt
+                    flying = min(_dist(pos[i], before[i]) / v, dt)  # the rest of the step held
+                    drawn = fly_w * flying + hover_w * (dt - flying)
                     drawn += descent if mode[i] == "landed" else 0.0
                     energy[i] -= drawn
                     used[i] += drawn

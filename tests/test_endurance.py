@@ -68,8 +68,8 @@ def rebuilt_energy(mission: Mission, result: RunResult) -> tuple[np.ndarray, np.
     """Each drone's energy left after every step it spent in the air, J (NaN for a step on
     the ground), and its energy drawn, rebuilt from the trajectory alone: a take-off gives a
     full battery less the climb; a step in the air (or the one it took off or landed in)
-    costs the flying power if the drone moved and the holding power if not; a landing the
-    descent."""
+    costs the flying power for the time the way it came takes at V_m and the holding power
+    for the rest; a landing the descent."""
     fly, hold, climb, descent = _powers(mission)
     capacity = mission.battery.battery_wh * 3600.0
     tr = result.trajectory
@@ -87,8 +87,9 @@ def rebuilt_energy(mission: Mission, result: RunResult) -> tuple[np.ndarray, np.
             if landed[k - 1, i]:  # took off at step k - 1
                 energy[i] = capacity - climb
                 used[i] += climb
-            moved = bool((tr.positions[k, i] != tr.positions[k - 1, i]).any())
-            drawn = (fly if moved else hold) * dt + (descent if landed[k, i] else 0.0)
+            way = float(np.hypot(*(tr.positions[k, i] - tr.positions[k - 1, i])))
+            flying = min(way / mission.team.speed, dt)
+            drawn = fly * flying + hold * (dt - flying) + (descent if landed[k, i] else 0.0)
             energy[i] -= drawn
             used[i] += drawn
             left[k, i] = energy[i]
@@ -96,7 +97,7 @@ def rebuilt_energy(mission: Mission, result: RunResult) -> tuple[np.ndarray, np.
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(wh=st.floats(6.0, 40.0), reserve=st.floats(0.0, 0.5), swap=st.floats(10.0, 300.0),
+@given(wh=st.floats(10.0, 40.0), reserve=st.floats(0.0, 0.4), swap=st.floats(10.0, 300.0),
        relays=st.integers(0, 2), run=st.integers(0, 10_000))
 def test_no_drone_flies_on_its_reserve(wh: float, reserve: float, swap: float, relays: int,
                                        run: int) -> None:
@@ -114,12 +115,12 @@ def test_no_drone_flies_on_its_reserve(wh: float, reserve: float, swap: float, r
 
 
 def test_a_route_drone_resumes_where_it_left_its_route() -> None:
-    """Two mTSP drones whose tours outlast a battery: each turns home, swaps, flies back to
-    where it left its tour and flies the rest of it, so it passes over every waypoint of its
-    tour in order, as without a battery, only later."""
-    mission = Mission.build(planner="mtsp", drones=2, rc=500.0, battery_wh=12.0,
+    """Two mTSP drones whose tours outlast a 25-minute battery: each turns home, swaps, flies
+    back to where it left its tour and flies the rest of it, so it passes over every waypoint
+    of its tour in order, as without a battery, only later."""
+    mission = Mission.build(planner="mtsp", drones=2, rc=500.0, battery_wh=70.0,
                             energy_model="zeng2019", mtsp_plan="shared", iterations=200,
-                            horizon=6000.0, flight_time=6000.0)
+                            horizon=8000.0, flight_time=8000.0)
     routes = prepare(mission).steering.routes
     result = simulate(mission, seed=1, run=0, trajectory=True)
     tr = result.trajectory
@@ -128,7 +129,7 @@ def test_a_route_drone_resumes_where_it_left_its_route() -> None:
     for i, route in enumerate(routes):
         turned = np.flatnonzero((tr.mode[1:, i] == Mode.RETURNING)
                                 & (tr.mode[:-1, i] != Mode.RETURNING))
-        assert turned.size == result.sorties[i] - 1
+        assert turned.size == result.sorties[i] - 1  # the tour ends before the next is due
         for k in turned:  # the point it left is flown over again after the swap
             later = np.hypot(*(tr.positions[k + 2:, i] - tr.positions[k, i]).T)
             assert later.min() < 1e-6
@@ -177,3 +178,12 @@ def test_simulate_prints_each_drone_s_sorties_ground_time_and_energy() -> None:
     assert result.sorties is not None and result.energy is not None
     assert data["sorties"] == result.sorties.tolist() and max(data["sorties"]) >= 2
     assert data["energy_wh"] == pytest.approx(result.energy / 3600.0, abs=1e-3)
+
+
+def test_a_battery_that_only_takes_off_and_lands_is_refused_in_one_line() -> None:
+    """6 Wh with half in reserve: the climb to 40 m and the landing alone take more."""
+    mission = Mission.build(planner="covb", drones=2, battery_wh=6.0, reserve=0.5,
+                            energy_model="zeng2019", altitude=40.0)
+    with pytest.raises(ConfigError, match=r"^battery.battery_wh = 6 with battery.reserve = 0.5 "
+                                          r"leaves 3 Wh a sortie, .* allowed, more than"):
+        simulate(mission, seed=0, run=0)

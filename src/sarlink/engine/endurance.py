@@ -3,8 +3,9 @@ that resumes (docs/model.md, Endurance). Compiled only into the kernels of teams
 battery (``ENERGY``, :mod:`sarlink.engine.build`): a team without one flies today's kernel.
 
 A drone flies at ``V_m`` or holds where it is, so its power is the energy model's at those two
-speeds (``p.fly_w``, ``p.hover_w``), evaluated once in Python (:mod:`sarlink.engine.energy`); a step
-in which a drone moved costs ``fly_w dt``, one in which it held ``hover_w dt``. A take-off
+speeds (``p.fly_w``, ``p.hover_w``), evaluated once in Python (:mod:`sarlink.engine.energy`): a step
+in which a drone came ``d`` metres from where it was costs ``fly_w d / V_m`` for the flight and
+``hover_w`` for the rest of the step. A take-off
 costs the climb to the mission's altitude (``p.climb_j``), a landing the descent
 (``p.descent_j``). A drone turns home at the first step at which what it has above the reserve
 no longer pays for the flight home (round the holes on a polygon area) three steps more, at the
@@ -137,14 +138,15 @@ def keep(px: np.ndarray, py: np.ndarray, mode: np.ndarray, bx: np.ndarray, by: n
 @njit(cache=True, error_model="numpy")
 def drain(p: Params, px: np.ndarray, py: np.ndarray, mode: np.ndarray, bx: np.ndarray,
           by: np.ndarray, airborne: np.ndarray, energy: np.ndarray, used: np.ndarray) -> None:
-    """The step's energy: ``fly_w dt`` for a drone in the air that moved, ``hover_w dt`` for
-    one that held where it was (a relay at its point, a reporter over the BS), and the descent
-    for one that landed."""
+    """The step's energy for every drone in the air: ``d / V_m`` of it flying, ``d`` the way
+    from where it was (straight: a route's corner within a step counts the chord), the rest
+    holding (a relay at its point, a reporter over the BS), and the descent for one that
+    landed."""
     for i in range(energy.shape[0]):
         if not airborne[i]:
             continue
-        moved = px[i] != bx[i] or py[i] != by[i]
-        drawn = (p.fly_w if moved else p.hover_w) * p.dt
+        flying = min(math.hypot(px[i] - bx[i], py[i] - by[i]) / p.speed, p.dt)
+        drawn = p.fly_w * flying + p.hover_w * (p.dt - flying)
         if mode[i] == LANDED:
             drawn += p.descent_j
         energy[i] -= drawn

@@ -352,8 +352,17 @@ def battery_params(mission: Mission) -> dict[str, Any]:
     climb = model.vertical_power(CLIMB_RATE) * altitude / CLIMB_RATE
     descent = model.vertical_power(-DESCENT_RATE) * altitude / DESCENT_RATE
     capacity = b.battery_wh * 3600.0
+    fly, hover = model.power(mission.team.speed), model.power(0.0)
+    least = climb + descent + 3.0 * mission.timing.dt * max(fly, hover)
+    if capacity * (1.0 - b.reserve) <= least:
+        raise ConfigError(
+            f"battery.battery_wh = {b.battery_wh:g} with battery.reserve = {b.reserve:g} leaves "
+            f"{capacity * (1.0 - b.reserve) / 3600.0:.3g} Wh a sortie, and the climb to "
+            f"{altitude:g} m, the landing and three steps in the air take {least / 3600.0:.3g} "
+            f"Wh under {mission.energy_model}: allowed, more than "
+            f"{least / 3600.0 / (1.0 - b.reserve):.3g} Wh")
     return {"battery_j": capacity, "reserve_j": b.reserve * capacity,
-            "fly_w": model.power(mission.team.speed), "hover_w": model.power(0.0),
+            "fly_w": fly, "hover_w": hover,
             "climb_j": climb, "descent_j": descent, "swap_steps": mission.steps(b.swap_time),
             "spares": -1 if b.spares is None else b.spares}
 
