@@ -20,6 +20,12 @@ flown from the model's text too: the detector's hold, the chain's points on the 
 the BS to it, the share-out in each component of the links, the points nearest the BS first,
 the flight and homing. The share-out itself is the engine's bottleneck assignment, run as
 plain Python (``assign.py_func``), checked on its own in tests/test_relay_placement.py.
+
+Batteries (``mission.battery``, docs/model.md, Endurance) are flown from the model's text: the
+energy of each step (flying or holding), the turn home when the energy above the reserve pays
+for the flight home and no more, the swap from the BS's spares, and the take-off in the role
+left (a route drone back to where it left its route). The powers are the energy model's own
+(``EnergyModel.power``), checked against its equations in tests/test_energy.py.
 """
 
 from __future__ import annotations
@@ -33,6 +39,7 @@ import numpy as np
 
 from sarlink.config import Mission
 from sarlink.engine.codes import PRIORITY_CODES
+from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
 from sarlink.engine.relays.placement import assign, plan
 from sarlink.engine.streams import run_streams
 
@@ -49,6 +56,11 @@ class NaiveResult:
     """At every checkpoint: the most hops from the BS to an airborne drone with a route."""
     farthest: list[float]
     """At every checkpoint: the distance from the BS of the farthest such drone, m (0: none)."""
+    sorties: list[int] | None = None
+    """On batteries: each drone's sorties, its time on the ground for swaps (s) and the
+    energy it drew (J)."""
+    ground_time: list[float] | None = None
+    energy: list[float] | None = None
 
 
 def _dist(p: tuple[float, float], q: tuple[float, float]) -> float:
@@ -166,6 +178,25 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     checkpoints = set(mission.checkpoint_steps())
     depth: list[int] = []
     farthest: list[float] = []
+
+    battery = mission.battery.battery_wh is not None
+    if battery:
+        model = get_energy_model(mission.energy_model)
+        capacity = mission.battery.battery_wh * 3600.0
+        reserve = mission.battery.reserve * capacity
+        fly_w, hover_w = model.power(v), model.power(0.0)
+        h = mission.channel.altitude
+        climb = model.vertical_power(CLIMB_RATE) * h / CLIMB_RATE
+        descent = model.vertical_power(-DESCENT_RATE) * h / DESCENT_RATE
+        spares = -1 if mission.battery.spares is None else mission.battery.spares
+        swap = round(mission.battery.swap_time / dt)
+    energy = [capacity - climb if battery else 0.0] * n
+    used = [climb if battery else 0.0] * n
+    sorties, ground_time = [1] * n, [0.0] * n
+    back_as: list[str | None] = [None] * n  # the role a drone takes off in after its swap
+    swap_ends: list[int | None] = [None] * n
+    rejoin: list[tuple[float, float] | None] = [None] * n  # where it left its route
+    home_max = 1.0 + max(_dist(bs, (cx, cy)) for cx in (0.0, a) for cy in (0.0, a))
 
     # mean-area: a loss margin of sigma² ln10 / 10n dB, so that E[area] = pi rc²
     n_exp, sigma = mission.channel.pathloss_exponent, mission.channel.sigma
@@ -299,7 +330,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         travel = v * dt * (k - when)
         if travel <= 0 or was == "chaining":  # it holds its point of the chain
             return x, y
-        if route[i]:
+        if route[i] and was != "returning":
             for wx, wy in route[i][w:]:
                 d = length(wx - x, wy - y)
                 if d > travel:
@@ -412,9 +443,56 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             aim[i] = clamp(points[i]) if i in routed else bs
             fly_to_aim(i, t, new)
 
+    def swaps(k: int, t: float) -> None:
+        """Batteries at the start of step ``k``: a drone landed for a swap takes a spare (none
+        left: it stays), waits the swap time on the ground and takes off in the role it left
+        (unless the flight budget is due: it would only turn home), and so observes the step
+        in the air."""
+        nonlocal spares
+        homing = (mission.team.flight_time - t) - home_max / v < 2 * dt
+        for i in range(n):
+            if mode[i] != "landed" or back_as[i] is None:
+                continue
+            if swap_ends[i] is None:
+                if spares == 0:
+                    back_as[i] = None
+                    continue
+                spares -= 1 if spares > 0 else 0
+                swap_ends[i] = k + swap
+            if k < swap_ends[i]:
+                ground_time[i] += dt
+                continue
+            if homing:
+                back_as[i] = None
+                continue
+            mode[i], back_as[i], swap_ends[i] = back_as[i], None, None
+            energy[i] = capacity - climb
+            used[i] += climb
+            sorties[i] += 1
+            last_change[i] = t - ts  # a distributed drone decides at once
+
+    def turns(new: list[float]) -> None:
+        """Every airborne drone whose energy above the reserve no longer pays for the flight
+        home and three steps more, at the larger of its flying and holding power, and the
+        descent, turns home, a route drone remembering where it left its route."""
+        for i in range(n):
+            if mode[i] in ("landed", "returning"):
+                continue
+            home = _dist(pos[i], bs)
+            if energy[i] - reserve > max(fly_w, hover_w) * (home / v + 3 * dt) + descent:
+                continue
+            back_as[i] = "relaying" if mode[i] == "relaying" else "search"
+            if route[i] and rejoin[i] is None:
+                rejoin[i] = pos[i]
+            mode[i] = "returning"
+            if home > 0:
+                new[i] = heading[i] = math.atan2(bs[1] - pos[i][1], bs[0] - pos[i][0])
+
     heard = [(bs[0], bs[1], heading[i], 0, 0, mode[i]) for i in range(n)]
     for k in range(steps + 1):
         t = k * dt
+        if battery:
+            swaps(k, t)
         # observe
         if mission.channel.sigma > 0 and readings.shadowing == "correlated":
             # Gudmundson: each drone end flies v dt per step; exp(-x / d_c) over x flown
@@ -474,6 +552,9 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         if mission.team.on_detect == "relay" and t_det is not None:
             form_the_chain(t, links)
 
+        if battery:
+            turns(new)
+
         routed_next: set[int] | None = None
         continuous = rule and alpha < 1 and readings.conb_check == "continuous"
         if continuous:  # routed at every increment up to t + t_s
@@ -526,12 +607,17 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
         heading = new
 
         # move
+        before = [None if mode[i] == "landed" else pos[i] for i in range(n)]
         for i in range(n):
             if mode[i] == "landed":
                 continue
-            if mode[i] == "returning" and _dist(pos[i], bs) <= v * dt:
-                pos[i] = bs
-                mode[i] = "landed"
+            if mode[i] == "returning":
+                if _dist(pos[i], bs) <= v * dt:
+                    pos[i] = bs
+                    mode[i] = "landed"
+                else:
+                    pos[i] = (pos[i][0] + v * dt * math.cos(heading[i]),
+                              pos[i][1] + v * dt * math.sin(heading[i]))
                 continue
             if mode[i] in ("relaying", "chaining"):
                 dx, dy = aim[i][0] - pos[i][0], aim[i][1] - pos[i][1]
@@ -542,6 +628,14 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                 continue
             if route[i]:  # on along the waypoints, landing after the last
                 travel = v * dt
+                if rejoin[i] is not None:  # back to where it left them first
+                    w = rejoin[i]
+                    d = length(w[0] - pos[i][0], w[1] - pos[i][1])
+                    if d > travel:
+                        pos[i] = (pos[i][0] + travel * (w[0] - pos[i][0]) / d,
+                                  pos[i][1] + travel * (w[1] - pos[i][1]) / d)
+                        continue
+                    pos[i], travel, rejoin[i] = w, travel - d, None
                 while travel > 0 and mode[i] != "landed":
                     w = route[i][wp_next[i]]
                     d = length(w[0] - pos[i][0], w[1] - pos[i][1])
@@ -557,10 +651,18 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                 continue
             pos[i] = (pos[i][0] + v * dt * math.cos(heading[i]),
                       pos[i][1] + v * dt * math.sin(heading[i]))
+        if battery:  # the step's energy: flying, or holding where it was
+            for i in range(n):
+                if before[i] is not None:
+                    flying = min(_dist(pos[i], before[i]) / v, dt)  # the rest of the step held
+                    drawn = fly_w * flying + hover_w * (dt - flying)
+                    drawn += descent if mode[i] == "landed" else 0.0
+                    energy[i] -= drawn
+                    used[i] += drawn
 
     immediate = t_not is not None and t_not == t_det
     return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
-                       farthest)
+                       farthest, *((sorties, ground_time, used) if battery else ()))
 
 
 @dataclass

@@ -1,7 +1,10 @@
-"""``sarlink export``: .plan files pass QGroundControl's loader rules, .waypoints load with
-pymavlink, coordinates round-trip to the simulated routes, the fence (in the .plan and in
-fence.waypoints, loaded by pymavlink's fence loader and checked against ArduPilot's rules) is
-the mission's area, and the GeoJSON validates."""
+"""``sarlink export``: .plan files pass QGroundControl's loader rules, and MAVSDK (an
+autopilot client's own importer and mission uploader) imports each one and uploads it to a
+vehicle stand-in of either autopilot, which receives the route; .waypoints load with pymavlink
+field for field as the .plan's items; coordinates round-trip to the simulated routes, the
+fence (in the .plan and in fence.waypoints, loaded by pymavlink's fence loader and checked
+against ArduPilot's rules) is the mission's area, and the GeoJSON validates (geojson-pydantic
+and geojson-validator: RFC 7946's structure, winding and valid geometries)."""
 
 from __future__ import annotations
 
@@ -11,22 +14,31 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+import geojson_validator
 import numpy as np
 import pytest
 from geojson_pydantic import FeatureCollection
 from pymavlink import mavutil, mavwp
 from shapely.geometry import LineString, MultiPoint, Polygon, shape
 
+from mavlink_vehicle import upload
 from sarlink import ConfigError, Mission, simulate
 from sarlink.config.region import area_polygon
 from sarlink.export import RELAY_NOTE, TRACK_POINTS, export_mission, mission_frame
+from sarlink.export.sorties import split_route
 from sarlink.planners import get_planner
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 MAV_AUTOPILOT_PX4 = 12  # the MAVLink common message set's MAV_AUTOPILOT enum
 MAV_AUTOPILOT_ARDUPILOTMEGA = 3
 MAV_CMD_NAV_WAYPOINT = 16
+MAV_CMD_NAV_LAND = 21
+MAV_CMD_NAV_TAKEOFF = 22
+MAV_CMD_DO_CHANGE_SPEED = 178
+MAV_FRAME_GLOBAL = 0
+MAV_FRAME_MISSION = 2
 MAV_FRAME_GLOBAL_RELATIVE_ALT = 3
+MAV_FRAME_GLOBAL_INT = 5
 MAV_CMD_NAV_FENCE_POLYGON_VERTEX_INCLUSION = 5001
 MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION = 5002
 GLOBAL_FRAMES = {0, 3, 5, 6, 10, 11}
@@ -416,7 +428,10 @@ def test_an_area_too_fine_for_ardupilot_keeps_its_fence_in_the_plan(tmp_path: Pa
 def test_waypoint_files_load_with_pymavlink_and_round_trip(tmp_path: Path,
                                                            valley: Mission) -> None:
     """Every waypoint, read back by pymavlink's loader and projected into the mission's
-    frame, lies within 0.1 m of the route the engine flies."""
+    frame, lies within 0.1 m of the route the engine flies; and every item after the home
+    line is the .plan's item, field for field (command, frame, the four parameters, latitude
+    and longitude to 1e-8 degree, altitude, autocontinue), the home line the BS on the
+    ground, the only current item."""
     export_mission(valley, tmp_path, firmware="ardupilot")
     frame = mission_frame(valley)
     routes = get_planner("mtsp-conb").steering(valley).routes
@@ -426,17 +441,140 @@ def test_waypoint_files_load_with_pymavlink_and_round_trip(tmp_path: Path,
         assert count == len(route) + 4  # home, take-off, speed, the route, land
         home = loader.wp(0)
         assert (home.y, home.x) == pytest.approx(frame.anchor, abs=1e-8)
+        assert (home.command, home.frame, home.z) == (MAV_CMD_NAV_WAYPOINT, MAV_FRAME_GLOBAL, 0)
+        assert [loader.wp(k).current for k in range(count)] == [1] + [0] * (count - 1)
         nav = [loader.wp(k) for k in range(loader.count()) if loader.wp(k).command == 16][1:]
         assert len(nav) == len(route)
         x, y = frame.to_local([w.y for w in nav], [w.x for w in nav])
         assert np.hypot(x - route[:, 0], y - route[:, 1]).max() < 0.1
         assert all(w.frame == MAV_FRAME_GLOBAL_RELATIVE_ALT for w in nav)
+        items = json.loads((tmp_path / f"drone-{i:02d}.plan").read_text())["mission"]["items"]
+        for k, item in enumerate(items, start=1):
+            w = loader.wp(k)
+            assert (w.seq, w.command, w.frame, w.autocontinue) == (
+                k, item["command"], item["frame"], 1)
+            params = [0.0 if p is None else p for p in item["params"]]
+            assert [w.param1, w.param2, w.param3, w.param4] == pytest.approx(params[:4],
+                                                                             abs=1e-8)
+            assert (w.x, w.y, w.z) == (pytest.approx(params[4], abs=1e-8),
+                                       pytest.approx(params[5], abs=1e-8),
+                                       pytest.approx(params[6], abs=1e-6))
 
 
-def test_the_team_geojson_validates(tmp_path: Path, valley: Mission) -> None:
-    out = export_mission(valley, tmp_path)
+@pytest.fixture(params=["valley", "sorties"])
+def uploaded(request: pytest.FixtureRequest, valley: Mission) -> Mission:
+    """The valley's route drones, and the docs' example cut into sorties by a battery."""
+    if request.param == "valley":
+        return valley
+    return valley.replace(planner="mtsp", drones=2, speed=8.0, battery_wh=70.0,
+                          energy_model="zeng2019")
+
+
+@pytest.mark.parametrize(("firmware", "code"), [("px4", MAV_AUTOPILOT_PX4),
+                                                ("ardupilot", MAV_AUTOPILOT_ARDUPILOTMEGA)])
+def test_every_plan_uploads_through_mavsdk(tmp_path: Path, uploaded: Mission, firmware: str,
+                                           code: int) -> None:
+    """MAVSDK imports each .plan with its QGroundControl importer and uploads the mission
+    to a vehicle of the plan's autopilot (tests/mavlink_vehicle.py): the vehicle receives
+    take-off at the BS, the speed, every waypoint of the flight to 1e-7 degree at the height,
+    landing at the BS, with their commands and frames and exactly one current item, the
+    take-off; under ArduPilot after the home position MAVSDK puts first (ArduPilot's item
+    0)."""
+    out = export_mission(uploaded, tmp_path, firmware=firmware, altitude=60.0)  # type: ignore[arg-type]
+    frame = mission_frame(uploaded)
+    routes = [r for r in get_planner(uploaded.team.planner).steering(
+        uploaded.searching()).routes if len(r)]
+    home = frame.anchor
+    flights = 0
+    for drone, route in zip((d for d in out.drones if d.kind == "route"), routes, strict=True):
+        flown = [split.waypoints for split in split_route(uploaded, drone.drone, route, 60.0)]
+        assert len(flown) == len(drone.sorties)
+        for sortie, waypoints in zip(drone.sorties, flown, strict=True):
+            items = upload(sortie.files[0], code)
+            flights += 1
+            assert [i.seq for i in items] == list(range(len(items)))
+            assert [i.current for i in items].count(1) == 1
+            if firmware == "ardupilot":
+                first = items.pop(0)
+                assert (first.command, first.current) == (MAV_CMD_NAV_WAYPOINT, 0)
+                assert (first.y / 1e7, first.x / 1e7) == pytest.approx(home, abs=1e-7)
+            lon, lat = frame.to_lonlat(waypoints[:, 0], waypoints[:, 1])
+            expected = [(MAV_CMD_NAV_TAKEOFF, MAV_FRAME_GLOBAL_RELATIVE_ALT, home, 60.0),
+                        (MAV_CMD_DO_CHANGE_SPEED, MAV_FRAME_MISSION, None, 0.0)]
+            expected += [(MAV_CMD_NAV_WAYPOINT, MAV_FRAME_GLOBAL_RELATIVE_ALT, point, 60.0)
+                         for point in zip(lon, lat, strict=True)]
+            expected.append((MAV_CMD_NAV_LAND, MAV_FRAME_GLOBAL_RELATIVE_ALT, home, 0.0))
+            assert [(i.command, i.frame) for i in items] == [e[:2] for e in expected]
+            assert items[0].current == 1 and items[1].param2 == uploaded.team.speed
+            for item, (_, _, point, height) in zip(items, expected, strict=True):
+                if point is not None:
+                    assert abs(item.y / 1e7 - point[0]) <= 1e-7
+                    assert abs(item.x / 1e7 - point[1]) <= 1e-7
+                assert item.z == pytest.approx(height)
+    assert flights == sum(len(d.sorties) for d in out.drones)
+
+
+def test_mavsdks_mission_planner_importer_adds_a_second_home_under_ardupilot(
+        tmp_path: Path, valley: Mission) -> None:
+    """What docs/missions.md warns of: MAVSDK's Mission Planner importer reads a .waypoints
+    file's home line as a waypoint and, under ArduPilot, puts a home position of its own
+    before it, so the vehicle gets two home items and the take-off third; under PX4 it would
+    fly to the home line, a waypoint at 0 m above sea level."""
+    out = export_mission(valley, tmp_path, firmware="ardupilot")
+    path = out.drones[0].files[1]
+    ardupilot = upload(path, MAV_AUTOPILOT_ARDUPILOTMEGA, importer="mission_planner")
+    assert [i.command for i in ardupilot[:3]] == [MAV_CMD_NAV_WAYPOINT, MAV_CMD_NAV_WAYPOINT,
+                                                  MAV_CMD_NAV_TAKEOFF]
+    assert ardupilot[1].frame == MAV_FRAME_GLOBAL and ardupilot[1].z == 0.0
+    px4 = upload(path, MAV_AUTOPILOT_PX4, importer="mission_planner")
+    assert (px4[0].command, px4[0].frame, px4[0].current) == (MAV_CMD_NAV_WAYPOINT,
+                                                              MAV_FRAME_GLOBAL, 1)
+
+
+ADVICE_NOT_KEPT = {"excessive_coordinate_precision"}
+"""What geojson-validator calls problematic and the team's map does on purpose: coordinates
+to 8 decimals (a millimetre: the routes and the area round-trip through the GeoJSON to it),
+where RFC 7946 advises 6 (about 10 cm) for plain maps."""
+TRACK_ADVICE_NOT_KEPT = {"duplicate_nodes", "excessive_vertices"}
+"""And for a simulated track: it passes its own points again (a drone parked at the BS), and
+keeps about TRACK_POINTS points of the run."""
+
+
+def _validator_problems(data: dict[str, Any]) -> dict[str, Any]:
+    """geojson-validator's findings: structure, invalid geometries, and problematic ones but
+    for the advice the map does not keep on purpose."""
+    geometries = geojson_validator.validate_geometries(data)
+    tracks = {k for k, f in enumerate(data["features"])
+              if f["properties"].get("role") == "simulated track"}
+    problematic = {kind: bad for kind, found in geometries["problematic"].items()
+                   if kind not in ADVICE_NOT_KEPT
+                   and (bad := [k for k in found
+                                if k not in tracks or kind not in TRACK_ADVICE_NOT_KEPT])}
+    return {**geojson_validator.validate_structure(data), **geometries["invalid"],
+            **problematic}
+
+
+def test_geojson_validator_can_fail() -> None:
+    """A clockwise outer ring breaks RFC 7946's winding; the checker above says so."""
+    ring = [[7.0, 46.0], [7.0, 46.01], [7.01, 46.01], [7.01, 46.0], [7.0, 46.0]]
+    data = {"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+            "geometry": {"type": "Polygon", "coordinates": [ring]}}]}
+    assert _validator_problems(data) == {"exterior_not_ccw": [0]}
+
+
+@pytest.mark.parametrize("battery_wh", [None, 70.0])
+def test_the_team_geojson_validates(tmp_path: Path, valley: Mission,
+                                    battery_wh: float | None) -> None:
+    """The team's map, with and without sorties (each a feature of its own)."""
+    mission = valley.replace(battery_wh=battery_wh, speed=8.0, energy_model="zeng2019")
+    out = export_mission(mission, tmp_path)
     data = json.loads(out.geojson.read_text())
     FeatureCollection.model_validate(data)  # RFC 7946's structure (geojson-pydantic)
+    assert _validator_problems(data) == {}
+    sorties = [f for f in data["features"] if f["properties"]["role"] == "sortie"]
+    assert len(sorties) == (0 if battery_wh is None else
+                            sum(len(d.sorties) for d in out.drones))
+    data["features"] = [f for f in data["features"] if f["properties"]["role"] != "sortie"]
     roles = [f["properties"]["role"] for f in data["features"]]
     assert roles.count("area") == 1 and roles.count("no-fly zone") == 1
     assert roles.count("prior zone") == 3 and roles.count("BS") == 1
@@ -455,7 +593,7 @@ def test_the_team_geojson_validates(tmp_path: Path, valley: Mission) -> None:
             assert back.exterior.hausdorff_distance(area.exterior) < 0.01  # m
         if feature["properties"]["role"] == "route":
             props = feature["properties"]
-            assert props["flight_time_s"] == pytest.approx(props["length_m"] / 5.0, abs=0.2)
+            assert props["flight_time_s"] == pytest.approx(props["length_m"] / 8.0, abs=0.2)
 
 
 def test_relays_are_written_as_their_simulated_tracks(tmp_path: Path, valley: Mission) -> None:

@@ -96,6 +96,29 @@ def test_sweep_files_read_the_area_beside_them(tmp_path: Path) -> None:
      ["no place on the map", "--area"]),
     (["export", "--area", AREA, "--firmware", "dji", "--out", "{d}/p"], ["--firmware 'dji'"]),
     (["export", "--area", AREA, "--altitude", "-5", "--out", "{d}/p"], ["--altitude", "> 0"]),
+    (["export", "--area", AREA, "--altitude", "100000", "--out", "{d}/p"],
+     ["--altitude", "at most 1000 m", "got 100000"]),
+    (["export", "--area", AREA, "--battery-wh", "-1", "--out", "{d}/p"],
+     ["--battery-wh (battery.battery_wh)", "greater than 0"]),
+    (["export", "--area", AREA, "--battery-wh", "inf", "--out", "{d}/p"],
+     ["--battery-wh (battery.battery_wh)", "finite number"]),
+    (["export", "--area", AREA, "--battery-wh", "nan", "--out", "{d}/p"],
+     ["--battery-wh (battery.battery_wh)", "finite number"]),
+    (["export", "--area", AREA, "--battery-wh", "90", "--reserve", "1", "--out", "{d}/p"],
+     ["--reserve (battery.reserve)", "less than 1"]),
+    (["export", "--area", AREA, "--reserve", "-0.2", "--out", "{d}/p"],
+     ["--reserve (battery.reserve)", "greater than or equal to 0"]),
+    (["export", "--area", AREA, "--swap-time", "0", "--out", "{d}/p"],
+     ["--swap-time (battery.swap_time)", "greater than 0"]),
+    (["export", "--area", AREA, "--speed", "0", "--out", "{d}/p"],
+     ["--speed (team.speed)", "greater than 0"]),
+    (["export", "--area", AREA, "--energy-model", "lipo", "--out", "{d}/p"],
+     ["--energy-model (battery.energy_model)", "unknown energy model 'lipo'",
+      "none, zeng2019, rodrigues2021"]),
+    (["export", "--area", AREA, "--energy-model", "none", "--battery-wh", "50", "--out",
+      "{d}/p"], ["--energy-model (battery.energy_model) 'none' draws no power"]),
+    (["export", "--area", AREA, "--planner", "mtsp", "--drones", "2", "--battery-wh", "20",
+      "--out", "{d}/p"], ["--battery-wh 20: drone 0's route cannot be flown in sorties"]),
 ])
 def test_bad_map_input_is_one_line(tmp_path: Path, args: list[str], words: list[str]) -> None:
     ring = [[6.99, 45.87], [7.03, 45.86], [7.06, 45.90], [7.00, 45.91], [6.99, 45.87]]
@@ -122,4 +145,22 @@ def test_bad_map_input_is_one_line(tmp_path: Path, args: list[str], words: list[
     lines = [line for line in out.stderr.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("error: "), out.output
     for word in words:
-        assert word in lines[0]
+        assert word in " ".join(lines[0].split())
+    assert not (tmp_path / "p").exists()  # nothing written, not even the folder
+
+
+def test_export_flies_a_battery_in_sorties_and_tables_them(tmp_path: Path) -> None:
+    """The docs' example: each sortie's files, length, duration and energy in the table, the
+    battery's rule and each drone's time with swaps below it, a note above 120 m."""
+    out = runner.invoke(app, ["export", "--area", AREA, "--planner", "mtsp", "--drones", "2",
+                              "--speed", "8", "--battery-wh", "70", "--energy-model",
+                              "zeng2019", "--altitude", "150", "--out", str(tmp_path / "p")],
+                        env={"COLUMNS": "200"})
+    assert out.exit_code == 0, out.output
+    names = sorted(p.name for p in (tmp_path / "p").iterdir())
+    assert names == [f"drone-0{i}-sortie-{k}.{ext}" for i in (0, 1) for k in (1, 2, 3)
+                     for ext in ("plan", "waypoints")] + ["fence.waypoints", "team.geojson"]
+    text = " ".join(out.stdout.split())
+    assert "drone-01-sortie-3.plan, .waypoints" in text and " 56.0 Wh " in text
+    assert "a sortie uses at most 56.0 Wh (80%)" in text and "drone 1 is done after" in text
+    assert "--altitude 150 m is above the 120 m" in text

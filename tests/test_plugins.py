@@ -27,6 +27,7 @@ from sarlink import (
     get_planner,
     load,
     planner_names,
+    register_energy_model,
     register_planner,
     register_radio,
     register_relay_strategy,
@@ -34,7 +35,7 @@ from sarlink import (
     simulate,
     sweep,
 )
-from sarlink.engine import RadioModel, radios, relays
+from sarlink.engine import RadioModel, energy, radios, relays
 from sarlink.engine.radios import DISC, lognormal
 from sarlink.engine.streams import run_streams
 from sarlink.planners import registry, rules
@@ -46,6 +47,7 @@ PLUGINS = Path(__file__).parent / "plugins"
 sys.path.insert(0, str(PLUGINS))
 import bad  # noqa: E402
 from covb_again import PLANNER  # noqa: E402
+from energy_outside import HEAVY  # noqa: E402
 from homebound import HOMEBOUND  # noqa: E402
 from liars import CLINGY  # noqa: E402
 from radios_outside import CUT, FULL, HALF, IMPOSTOR  # noqa: E402
@@ -129,7 +131,9 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
         "[sarlink.radios]\ncut = radios_outside:CUT\ndisc = radios_outside:IMPOSTOR\n"
         "not-a-radio = covb_again:PLANNER\n"
         "[sarlink.relays]\nmidpoint = relays_outside:MIDPOINT\n"
-        "not-a-strategy = radios_outside:CUT\n")
+        "not-a-strategy = radios_outside:CUT\n"
+        "[sarlink.energy_models]\nheavy = energy_outside:HEAVY\n"
+        "not-a-model = covb_again:PLANNER\n")
     monkeypatch.syspath_prepend(str(tmp_path))
     for kind in KINDS.values():
         monkeypatch.setattr(kind, "_loaded", False)
@@ -148,7 +152,11 @@ def test_plug_ins_of_an_installed_package_are_found_by_entry_points(
 
     broken = {(b["kind"], b["entry_point"]): b["error"] for b in listing()["broken"]}
     assert broken.keys() == {("planner", "broken"), ("radio", "disc"), ("radio", "not-a-radio"),
-                             ("relay", "not-a-strategy")}
+                             ("relay", "not-a-strategy"), ("energy_model", "not-a-model")}
+    assert "register_energy_model takes a sarlink EnergyModel" in broken[
+        "energy_model", "not-a-model"]
+    assert energy.ENERGY_MODELS.entries()["heavy"].origin == (
+        "sarlink-testplug 1.2 (entry point heavy)")
     assert "register_relay_strategy takes a sarlink RelayStrategy" in broken[
         "relay", "not-a-strategy"]
     assert broken["radio", "disc"].endswith("radio model name 'disc' is taken (from sarlink)")
@@ -192,9 +200,11 @@ def test_what_is_registered_in_code_is_adopted_by_workers_and_nothing_else() -> 
     register_radio(CUT)
     register_planner(PLANNER)
     register_relay_strategy(MIDPOINT)
+    register_energy_model(HEAVY)
     found = plugins_in_code()
     assert {k: [e.obj.name for e in v] for k, v in found.items()} == {
-        "radio": ["cut-bs"], "relay": ["midpoint"], "planner": ["covb-again"]}
+        "radio": ["cut-bs"], "relay": ["midpoint"], "planner": ["covb-again"],
+        "energy_model": ["heavy"]}
     adopt_plugins(found)  # the same objects: nothing changes
     register_planner(replace(PLANNER, label="Other"), replace=True)
     with pytest.raises(ConfigError, match="planner name 'covb-again' means another planner in "

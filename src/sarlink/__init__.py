@@ -28,6 +28,7 @@ from sarlink.engine import (
     register_relay_strategy,
     relay_strategy_names,
 )
+from sarlink.engine.energy import EnergyModel, energy_model_names, register_energy_model
 from sarlink.planners import (
     RoutePlanner,
     RulePlanner,
@@ -82,6 +83,7 @@ __all__ = [
     "Channel",
     "ConfigError",
     "DistributedRule",
+    "EnergyModel",
     "Experiment",
     "Mission",
     "MtspSettings",
@@ -100,11 +102,13 @@ __all__ = [
     "Trajectory",
     "at_range",
     "design",
+    "energy_model_names",
     "get_planner",
     "load",
     "planner_names",
     "prepare",
     "radio_names",
+    "register_energy_model",
     "register_planner",
     "register_radio",
     "register_relay_strategy",

@@ -63,6 +63,12 @@ class RunResult:
     with ``notify_rc2[j] <= r_c * r_c`` (never, if there is none); None otherwise."""
     notify_rc2: np.ndarray | None = None
     """The squared ranges of that staircase, m², strictly falling."""
+    sorties: np.ndarray | None = None
+    """A team on batteries (``mission.battery``): each drone's sorties; None without one."""
+    ground_time: np.ndarray | None = None
+    """Each drone's time on the ground for battery swaps, s; None without a battery."""
+    energy: np.ndarray | None = None
+    """Each drone's energy drawn, J (climbs and descents included); None without a battery."""
 
     @property
     def horizon(self) -> float:
@@ -141,4 +147,8 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
     if all(r.notify_times is not None and r.notify_rc2 is not None for r in results):
         columns["notify_times"] = [r.notify_times for r in results]
         columns["notify_rc2"] = [r.notify_rc2 for r in results]
+    for name in ("sorties", "ground_time", "energy"):  # a team on batteries, per drone
+        values = [getattr(r, name) for r in results]
+        if all(v is not None for v in values):
+            columns[name] = values
     return columns

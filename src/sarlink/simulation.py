@@ -10,6 +10,7 @@ import numpy as np
 
 from sarlink.config import Mission
 from sarlink.engine import Prepared, Scenario, Steering, get_radio, get_relay_strategy
+from sarlink.engine.energy import get_energy_model
 from sarlink.planners import get_planner
 from sarlink.registry import Plugins, adopt_plugins, plugins_in_code
 from sarlink.result import RunResult
@@ -19,12 +20,13 @@ __all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prep
 
 
 def check_mission(mission: Mission) -> None:
-    """Raise a :class:`~sarlink.ConfigError` unless the mission's planner, radio model and
-    relay strategy are known: what cannot be checked before plug-ins are loaded, checked where
-    work starts."""
+    """Raise a :class:`~sarlink.ConfigError` unless the mission's planner, radio model, relay
+    strategy and energy model are known: what cannot be checked before plug-ins are loaded,
+    checked where work starts."""
     get_planner(mission.team.planner)
     get_radio(mission.radio)
     get_relay_strategy(mission.team.relay_strategy)
+    get_energy_model(mission.energy_model)
 
 
 def warm_up(planner: str, radio: str, *, ranges: bool = False,

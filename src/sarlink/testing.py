@@ -14,7 +14,11 @@ helper flies or calls a registered plug-in and raises an ``AssertionError`` nami
   :class:`~sarlink.RelayStrategy` (every drone in the area, the BS not notified before the
   detection), the same ``(seed, run)`` flies the same, and the points its ``place`` hook
   writes for the relays are finite (the kernel ignores others, so such a relay would stand
-  still unnoticed).
+  still unnoticed);
+- :func:`check_energy_model`: an :class:`~sarlink.EnergyModel`'s hooks compile with Numba
+  (the kernel calls them compiled) and give there what they give in Python; its powers are
+  finite and never negative, the same hovering in level flight and straight up or down at
+  speed 0, and a model that draws power draws it at every speed.
 
 In a plug-in's test suite::
 
@@ -34,10 +38,12 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from numba import njit
 
 from sarlink.config import Mission, Readings
 from sarlink.engine import Observation, Prepared, RadioModel, Steering, get_radio
 from sarlink.engine.codes import Mode
+from sarlink.engine.energy import get_energy_model
 from sarlink.engine.geometry import FAR, PAD
 from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.relays import get_relay_strategy
@@ -47,7 +53,14 @@ from sarlink.playback import replay
 from sarlink.result import RunResult
 from sarlink.simulation import prepare, simulate
 
-__all__ = ["check_planner", "check_radio", "check_relay_strategy", "check_rule", "check_run"]
+__all__ = ["check_energy_model", "check_planner", "check_radio", "check_relay_strategy",
+           "check_rule", "check_run"]
+
+SPEEDS = np.linspace(0.0, 40.0, 81)
+"""Ground speeds (m/s) an energy model's level hook is called at: hover to beyond any
+multirotor's top speed."""
+CLIMBS = np.linspace(-10.0, 10.0, 41)
+"""Vertical speeds (m/s) its vertical hook is called at."""
 
 
 def check_run(result: RunResult, mission: Mission) -> None:
@@ -298,3 +311,29 @@ def _bits(flags: np.ndarray) -> np.ndarray:
     padded = np.zeros((*flags.shape[:-1], -(-m // 64) * 64), dtype=bool)
     padded[..., :m] = flags
     return np.packbits(padded, axis=-1, bitorder="little").view("<u8").astype(np.uint64)
+
+
+def check_energy_model(name: str) -> None:
+    """Call the hooks of the registered energy model ``name`` at :data:`SPEEDS` and
+    :data:`CLIMBS`, compiled and in Python, and check what they return (module docstring)."""
+    model = get_energy_model(name)
+    ep = model.array
+    for hook, speeds in (("level", SPEEDS), ("vertical", CLIMBS)):
+        fn = getattr(model, hook)
+        compiled = fn if hasattr(fn, "py_func") else njit(fn)
+        python = compiled.py_func
+        for v in speeds:
+            where = f"energy model {name!r}: {hook}({v:g}, params)"
+            got = compiled(float(v), ep)
+            assert np.isfinite(got) and got >= 0, f"{where} = {got!r}, not a power >= 0 W"
+            again = python(float(v), ep)
+            assert np.isclose(got, again, rtol=1e-12, atol=0.0), (
+                f"{where} is {got!r} compiled but {again!r} in Python")
+            assert model.draws_power == (got > 0), (
+                f"{where} = {got!r}, but level(0, params) = {model.power(0.0)!r}: a model "
+                "draws power at every speed or at none")
+    hover = model.power(0.0)
+    for vz in (0.0, -0.0):
+        assert np.isclose(model.vertical_power(vz), hover, rtol=1e-12, atol=0.0), (
+            f"energy model {name!r}: vertical({vz}) = {model.vertical_power(vz)!r} is not "
+            f"level(0) = {hover!r}, the hover power")

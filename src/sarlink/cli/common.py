@@ -18,12 +18,15 @@ __all__ = ["console", "err_console", "output_folder", "plot_file",
 console = Console()
 
 
-def output_folder(path: Path, option: str) -> Path:
-    """``path`` as a folder to write into, created if missing; a :class:`ConfigError` names
+def output_folder(path: Path, option: str, *, create: bool = True) -> Path:
+    """``path`` as a folder to write into, created if missing (unless not ``create``: its
+    writer creates it once it has something to write); a :class:`ConfigError` names
     ``option`` if it cannot be one."""
     if path.exists() and not path.is_dir():
         raise ConfigError(f"{option} {path} is a file; a folder is expected (a new one is "
                           "created)")
+    if not create:
+        return path
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:

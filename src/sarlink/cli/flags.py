@@ -32,8 +32,19 @@ from pydantic.fields import FieldInfo
 from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
 from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
-from sarlink.config.mission import Area, Channel, MtspSettings, Readings, Sensing, Team, Timing
+from sarlink.config.mission import (
+    ENERGY_MODEL_WITH_BATTERY,
+    Area,
+    Battery,
+    Channel,
+    MtspSettings,
+    Readings,
+    Sensing,
+    Team,
+    Timing,
+)
 from sarlink.engine import relay_strategy_names
+from sarlink.engine.energy import energy_model_names
 from sarlink.planners import planner_names
 from sarlink.simulation import check_mission
 
@@ -85,7 +96,7 @@ class Flag:
 def _field(param: str) -> FieldInfo:
     models: dict[str, type[BaseModel]] = {
         "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "readings": Readings, "mtsp": MtspSettings}
+        "readings": Readings, "mtsp": MtspSettings, "battery": Battery}
     return models[param_groups()[param]].model_fields[param]
 
 
@@ -131,7 +142,7 @@ FLAGS: tuple[Flag, ...] = _rows(
     ("--size", float, "side a of the square area, m", "size", {"design", "plan"}),
     ("--r", float, "sensing range r (the mTSP cell side), m", "r",
      {*ONE_RUN, "design", "plan", "export"}),
-    ("--speed", float, "flight speed V_m, m/s", "speed", {"plan"}),
+    ("--speed", float, "flight speed V_m, m/s", "speed", {"plan", "export"}),
     ("--p-miss", float, "miss probability per look", "p_miss", {*ONE_RUN, "design"}),
     ("--look", str, "when a drone looks", "look", {*ONE_RUN, "design"}),
     ("--shadowing-sigma", float, "log-normal shadowing sigma, dB", "sigma",
@@ -152,6 +163,20 @@ FLAGS: tuple[Flag, ...] = _rows(
      {"plan"}),
     ("--population", int, "GA population", "population", {"plan"}),
     ("--iterations", int, "GA iterations", "iterations", {"plan"}),
+    ("--battery-wh", float, "battery capacity, Wh: drones swap batteries at the BS when it "
+     "runs low; the export splits each route into sorties that fit it", "battery_wh",
+     {*ONE_RUN, "design", "export"}),
+    ("--energy-model", str, "the power a drone draws as it flies: "
+     f"{', '.join(energy_model_names())} (default: none without --battery-wh, "
+     f"{ENERGY_MODEL_WITH_BATTERY} with it)", "energy_model", {*ONE_RUN, "design", "export"}),
+    ("--reserve", float, "fraction of the battery kept in reserve: a sortie uses at most the "
+     "rest", "reserve", {*ONE_RUN, "design", "export"}),
+    ("--swap-time", float, "time to swap a battery at the BS, s", "swap_time",
+     {*ONE_RUN, "design", "export"}),
+    ("--spares", int, "spare batteries at the BS (default: as many as needed)", "spares",
+     {*ONE_RUN, "design"}),
+    ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
+     "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN | {"design"}, apply=_read),

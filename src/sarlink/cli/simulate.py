@@ -93,6 +93,11 @@ def simulate(
         "depth_max": _finite_or_none(float(np.nanmax(result.depth, initial=-np.inf))),
         "farthest_max": _finite_or_none(float(np.nanmax(result.farthest, initial=-np.inf))),
     }
+    if result.sorties is not None and result.ground_time is not None and \
+            result.energy is not None:  # a team on batteries
+        out["sorties"] = result.sorties.tolist()
+        out["ground_time"] = result.ground_time.tolist()
+        out["energy_wh"] = [round(e / 3600.0, 3) for e in result.energy.tolist()]
     region = mission.region
     if region is not None and region.anchor is not None:  # on the map: where to look
         from sarlink.export import mission_frame
@@ -132,6 +137,11 @@ def simulate(
         table.add_row("farthest connected drone", _when(
             result.checkpoints, result.farthest,
             f"{out['farthest_max']:.0f} m (r_c = {mission.channel.rc:g} m)"))
+    if "sorties" in out:
+        table.add_row("sorties per drone", ", ".join(map(str, out["sorties"])))
+        table.add_row("on the ground for swaps", ", ".join(f"{g:g} s" for g in
+                                                           out["ground_time"]))
+        table.add_row("energy drawn", ", ".join(f"{e:.1f} Wh" for e in out["energy_wh"]))
     console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")

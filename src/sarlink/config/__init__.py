@@ -4,6 +4,7 @@ from sarlink.config.base import Checked, ConfigError
 from sarlink.config.experiment import Experiment, mission_hash
 from sarlink.config.mission import (
     Area,
+    Battery,
     Channel,
     Mission,
     MtspSettings,
@@ -19,6 +20,7 @@ __all__ = [
     "DEFAULT_READING",
     "READINGS",
     "Area",
+    "Battery",
     "Channel",
     "Checked",
     "ConfigError",

@@ -39,9 +39,12 @@ ADDED_LATER: dict[str, dict[str, Any]] = {
              "relay_estimate": "reckoned"},
     "channel": {"radio": None, "decorrelation": 50.0},
     "readings": EARLIER_CHOICES,
+    "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0,
+                "spares": None},
 }
 """Parameters added after results were first stored, with the value that keeps the earlier
-behaviour: left out of the hash at that value, so earlier results folders stay valid."""
+behaviour: left out of the hash at that value, so earlier results folders stay valid (a group
+left empty so is left out too)."""
 
 
 def mission_hash(mission: Mission) -> str:
@@ -49,8 +52,10 @@ def mission_hash(mission: Mission) -> str:
     data = mission.model_dump(mode="json")
     for group, fields in ADDED_LATER.items():
         for name, value in fields.items():
-            if data[group].get(name, value) == value:
-                data[group].pop(name, None)
+            if data.get(group, {}).get(name, value) == value:
+                data.get(group, {}).pop(name, None)
+        if data.get(group) == {}:
+            data.pop(group)
     return hashlib.sha256(to_json(data)).hexdigest()[:16]  # the bytes of model_dump_json
 
 

@@ -25,7 +25,9 @@ from sarlink.config.geo import FILE_KEYS, resolve_files
 from sarlink.config.region import Region, check_region
 
 __all__ = [
+    "ENERGY_MODEL_WITH_BATTERY",
     "Area",
+    "Battery",
     "Channel",
     "Mission",
     "MtspSettings",
@@ -248,6 +250,37 @@ class Readings(Checked):
     )
 
 
+ENERGY_MODEL_WITH_BATTERY = "rodrigues2021"
+"""The energy model of a battery whose model is not named: the one measured on a small
+quadcopter, which draws the most power of the built-in models (the cautious prediction)."""
+
+
+class Battery(Checked):
+    """The drones' battery and the energy model that drains it (beyond the paper, which flies
+    without one; docs/model.md, Energy). A sortie may use the capacity less the reserve."""
+
+    energy_model: str | None = Field(
+        None, min_length=1,
+        description="the power a drone draws as it flies, by name (sarlink.engine.energy."
+        f"energy_model_names()): none, the paper's, no battery; zeng2019; rodrigues2021. None: "
+        f"none without a battery, {ENERGY_MODEL_WITH_BATTERY} with one",
+    )
+    battery_wh: float | None = Field(
+        None, gt=0, description="battery capacity, Wh; None: no battery (the paper)")
+    reserve: float = Field(
+        0.2, ge=0, lt=1,
+        description="fraction of the capacity kept for the unforeseen: a sortie uses at most "
+        "the rest (the 80 % rule of mission planners)",
+    )
+    swap_time: float = Field(
+        120.0, gt=0, description="time to land, swap the battery and take off again at the "
+        "BS, s")
+    spares: int | None = Field(
+        None, ge=0, strict=True,
+        description="spare batteries at the BS, shared by the team; None: as many as needed. "
+        "A drone that lands for a swap when none is left stays parked")
+
+
 class MtspSettings(Checked):
     """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings.
 
@@ -296,6 +329,7 @@ class Mission(Checked):
     timing: Timing = Field(default_factory=Timing)
     readings: Readings = Field(default_factory=Readings)
     mtsp: MtspSettings = Field(default_factory=MtspSettings)
+    battery: Battery = Field(default_factory=Battery)
     region: Region | None = Field(
         None, description="a polygon area, holes, a target prior and a place on the map "
         "(sarlink.config.region); None: the paper's square and uniform target")
@@ -313,11 +347,14 @@ class Mission(Checked):
 
     @model_serializer(mode="wrap")
     def _without_default_region(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
-        """Leave out ``region`` when it is None: the paper's missions serialise, and so hash
-        (:func:`sarlink.config.mission_hash`, the names of result folders), as before regions."""
+        """Leave out ``region`` when it is None and ``battery`` when it is the default: the
+        paper's missions serialise, and so hash (:func:`sarlink.config.mission_hash`, the names
+        of result folders), as before regions and batteries."""
         data: dict[str, Any] = handler(self)
         if self.region is None:
             data.pop("region", None)
+        if self.battery == Battery():
+            data.pop("battery", None)
         return data
 
     @model_validator(mode="after")
@@ -390,7 +427,7 @@ class Mission(Checked):
                 raise ConfigError(
                     f"unknown mission parameter {name!r}; known: {', '.join(sorted(owner))}"
                 )
-            data[owner[name]][name] = value
+            data.setdefault(owner[name], {})[name] = value
         return Mission.from_dict(data)
 
     # -- derived quantities used by the engine -------------------------------------------------
@@ -434,6 +471,25 @@ class Mission(Checked):
                              f"{self.channel.sigma} needs channel.radio = 'shadowing' (or none)")
         return self
 
+    @model_validator(mode="after")
+    def _battery_has_a_model(self) -> Self:
+        b = self.battery
+        if b.energy_model == "none" and b.battery_wh is not None:
+            raise ValueError(f"battery.energy_model 'none' draws no power, so battery."
+                             f"battery_wh = {b.battery_wh:g} would never run down; name a model "
+                             f"that draws power, or leave battery.energy_model unset "
+                             f"({ENERGY_MODEL_WITH_BATTERY})")
+        return self
+
+    @property
+    def energy_model(self) -> str:
+        """The energy model's name, resolving the default: none without a battery, else
+        :data:`ENERGY_MODEL_WITH_BATTERY`."""
+        b = self.battery
+        if b.energy_model is not None:
+            return b.energy_model
+        return "none" if b.battery_wh is None else ENERGY_MODEL_WITH_BATTERY
+
     @property
     def radio(self) -> str:
         """The radio model's name, resolving the paper's default."""
@@ -450,7 +506,7 @@ class Mission(Checked):
 def flat_groups() -> dict[str, type[BaseModel]]:
     """The groups whose fields are flat mission parameters (every group but ``region``)."""
     return {"area": Area, "team": Team, "sensing": Sensing, "channel": Channel,
-            "timing": Timing, "readings": Readings, "mtsp": MtspSettings}
+            "timing": Timing, "readings": Readings, "mtsp": MtspSettings, "battery": Battery}
 
 
 def param_groups() -> dict[str, str]:

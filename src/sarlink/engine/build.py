@@ -65,14 +65,15 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
 
 def plugin_block(rule: DistributedRule | None, radio: RadioModel,
                  relays: RelayStrategy | None = None, *, scans_ranges: bool = True,
-                 chain: bool = False) -> str:
+                 chain: bool = False, energy: bool = False) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only), ``radio``
     and ``relays`` (``None``: a team without relays, ``RELAYS = False``); ``chain``: the team
     forms a chain to a found target (``on_detect = relay``, ``CHAIN``; else that code is not
-    compiled). The range scan (:mod:`sarlink.engine.critical_ranges`, inlined: most of a
-    kernel's compile time after the rule) is compiled only into a kernel whose team may fly
-    the same at every range (no relays and no chain: their points depend on the range), and
-    if ``scans_ranges``."""
+    compiled); ``energy``: its drones fly on batteries (``ENERGY``,
+    :mod:`sarlink.engine.endurance`; else that code is not compiled). The range scan
+    (:mod:`sarlink.engine.critical_ranges`, inlined: most of a kernel's compile time after the
+    rule) is compiled only into a kernel whose team may fly the same at every range (no relays
+    and no chain: their points depend on the range), and if ``scans_ranges``."""
     hooks = {"rule_" + name: fn for name, fn in (rule.hooks() if rule else {}).items()}
     defaults: dict[str, Callable[..., Any]] = {
         "rule_prepare": none.prepare, "rule_due": none.due, "rule_decide": none.decide}
@@ -88,9 +89,10 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel,
         lines += ["", "", "@njit(inline='always')", "def radio_static(p, rp):",
                   f"    return {radio.static}", ""]
     range_free = (radio.range_free and (rule is None or rule.range_free) and relays is None
-                  and not chain)
+                  and not chain and not energy)
     lines += [f"RELAYS = {relays is not None}",
               f"CHAIN = {chain}",
+              f"ENERGY = {energy}",
               f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
               f"SCANS_RANGES = {scans_ranges and range_free}",
@@ -117,11 +119,11 @@ def stepping_source(text: str) -> str:
 
 def kernel_source(rule: DistributedRule | None, radio: RadioModel,
                   relays: RelayStrategy | None = None, *, cache: bool = True,
-                  stepping: bool = False, chain: bool = False) -> str:
-    """The text of the kernel module for ``rule``, ``radio``, ``relays`` and ``chain`` (its
-    stepping form if ``stepping``)."""
+                  stepping: bool = False, chain: bool = False, energy: bool = False) -> str:
+    """The text of the kernel module for ``rule``, ``radio``, ``relays``, ``chain`` and
+    ``energy`` (its stepping form if ``stepping``)."""
     block = plugin_block(rule, radio, relays, scans_ranges=not stepping,  # an env never scans
-                         chain=chain)
+                         chain=chain, energy=energy)
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)
@@ -196,10 +198,11 @@ def _slug(name: str) -> str:
 
 def kernel_for(rule: DistributedRule | None, radio: RadioModel,
                relays: RelayStrategy | None = None, *, cache: bool = True,
-               stepping: bool = False, chain: bool = False) -> Callable[..., Any]:
+               stepping: bool = False, chain: bool = False, energy: bool = False
+               ) -> Callable[..., Any]:
     """``simulate_kernel`` compiled for ``rule``, ``radio`` and ``relays`` (``None``: a team
     without relays), with the chain to a found target if ``chain`` (``on_detect = relay``)
-    (lazily, on the first call).
+    and with batteries if ``energy`` (lazily, on the first call).
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
     ``stepping=True`` gives the stepping form (:func:`stepping_source`): a generator of the
@@ -207,15 +210,18 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel,
     decisions; ``rule`` then gives only the schedule (``prepare``, ``due``, ``near``): its
     ``decide`` is not called.
     """
-    key = (rule, radio_identity(radio), relays, cache, stepping, chain)  # disc, shadowing share
+    # disc and shadowing share a kernel
+    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy)
     if key not in _MEMO:
         if stepping and rule is not None:
             rule = dataclasses.replace(rule, decide=none.decide)
-        text = kernel_source(rule, radio, relays, cache=cache, stepping=stepping, chain=chain)
+        text = kernel_source(rule, radio, relays, cache=cache, stepping=stepping, chain=chain,
+                             energy=energy)
         digest = kernel_digest(rule, radio, text, relays)
         form = "_steps" if stepping else ""
         relayed = f"_relays_{_slug(relays.name)}" if relays else ""
         chained = "_chain" if chain else ""
+        chained += "_energy" if energy else ""
         name = (f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{relayed}{chained}"
                 f"{form}_{digest}")
         if cache:

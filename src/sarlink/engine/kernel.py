@@ -24,7 +24,7 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import area, critical_ranges, graph, motion, records, sensing
+from sarlink.engine import area, critical_ranges, endurance, graph, motion, records, sensing
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -52,6 +52,7 @@ from sarlink.engine.rules.none import prepare as rule_prepare
 
 RELAYS = False
 CHAIN = False
+ENERGY = False
 RULE_DUE = False
 RULE_NEAR = False
 SCANS_RANGES = True
@@ -122,6 +123,11 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         chain_x, chain_y = np.empty(0), np.empty(0)  # the chain's points, once found
         heard = np.zeros(nw, dtype=np.uint64)
         slot = np.full(n, -1, dtype=np.int64)  # the point each drone of the chain holds
+    if ENERGY:  # compiled only for a team with a battery (build)
+        battery = endurance.start(p, n)
+        energy, resume, was_route, ground_until, sorties, ground_s, used = battery
+        spares = np.full(1, p.spares, dtype=np.int64)
+        bx, by, airborne = np.empty(n), np.empty(n), np.zeros(n, dtype=np.bool_)
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
@@ -143,6 +149,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         t = k * p.dt
         due = ci  # the first checkpoint at or after this step
         ci = records.take_checkpoints(k, cp_steps, ci, reach_cum, conn_cum, acc_reach, acc_conn)
+        if ENERGY:  # swaps on the ground; a drone that takes off observes this step airborne
+            endurance.ground(k, (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt, p, mode,
+                             on_route, last_change, energy, resume, was_route, ground_until,
+                             sorties, ground_s, used, spares)
         # ---- observe: sense, link, flood, notify, account ----
         radio_update(thr2, p, rp, k, rng_shadow)
         first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
@@ -181,7 +191,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         acc_conn += p.dt * connected / n
         homing = (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt
         # a drone lands at the end of its route or, homing, at the BS
-        if may_settle and (routes or homing) and records.settled(mode, in_range, knows, p.look):
+        if may_settle and (routes or homing) and records.settled(mode, in_range, knows, p.look
+                                                                ) and not (
+                ENERGY and endurance.pending(resume)):
             # a settled team observes this step again and again (the graph, the knowers and
             # the links to the target are fixed): carry the sums to the horizon
             records.carry_records(k + 1, p.n_steps, cp_steps, ci, reach_cum, conn_cum,
@@ -206,6 +218,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                                      py, aim_x, aim_y, edges)
             relay_chain.join(detector, knows, mode, on_route, px, py, adj, chain_x, chain_y,
                              slot, aim_x, aim_y, heard, stack)
+        if ENERGY:  # who turns home to swap
+            endurance.turn_home(p, px, py, hx, hy, mode, on_route, energy, resume, was_route,
+                                leave_x, leave_y, rejoin, edges, nav)
         any_deciding = motion.schedule(k, homing, p, px, py, hx, hy, mode, on_route,
                                        last_change, deciding, nhx, nhy)
         if RULE_DUE:
@@ -230,9 +245,17 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         hx[:] = nhx
         hy[:] = nhy
         # ---- move ----
+        if ENERGY:
+            endurance.keep(px, py, mode, bx, by, airborne)
         motion.move(p, px, py, hx, hy, mode, on_route, wp, wp_next, wp_end, leave_x, leave_y,
                     rejoin, aim_x, aim_y)
+        if ENERGY:
+            endurance.drain(p, px, py, mode, bx, by, airborne, energy, used)
 
+    if ENERGY:  # noqa: SIM108 (a statement Numba prunes: without ENERGY, sorties is unbound)
+        flown = records.Sorties(sorties, ground_s, used)
+    else:
+        flown = records.one_sortie(n)
     reach_cum[ci:] = np.nan  # checkpoints after an early stop
     conn_cum[ci:] = np.nan
     kk = min(traj_pos.shape[0], k + 1)  # a run stopped early records fewer steps
@@ -241,4 +264,4 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
                                    traj_route[:kk], traj_mode[:kk], traj_links[:kk]),
-                     at_ranges, depth, farthest, obs.work[0])
+                     at_ranges, depth, farthest, obs.work[0], flown)

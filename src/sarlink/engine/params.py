@@ -105,3 +105,20 @@ class Params(NamedTuple):
     relay_estimate: int
     """Where the BS believes a searcher it has not heard since (``team.relay_estimate``;
     :class:`~sarlink.engine.codes.Estimate`)."""
+    battery_j: float
+    """A full battery, J (``inf``: no battery, and the kernel is compiled without endurance,
+    :mod:`sarlink.engine.endurance`)."""
+    reserve_j: float
+    """What a drone keeps for landing safely, J: it turns home before it would draw on it."""
+    fly_w: float
+    """The energy model's power at ``V_m``, W."""
+    hover_w: float
+    """Its power holding in place, W."""
+    climb_j: float
+    """A take-off's climb to the mission's altitude, J."""
+    descent_j: float
+    """A landing's descent from it, J."""
+    swap_steps: int
+    """A battery swap at the BS, steps."""
+    spares: int
+    """Spare batteries at the BS (``-1``: unlimited)."""

@@ -47,6 +47,21 @@ class AtRanges(NamedTuple):
     """``(ranges, checkpoints)``: its farthest drone at each range."""
 
 
+class Sorties(NamedTuple):
+    """Each drone's sorties, time on the ground for battery swaps (s) and energy drawn (J,
+    NaN for a team without a battery, which flies one sortie: :mod:`sarlink.engine.endurance`)."""
+
+    number: np.ndarray
+    ground: np.ndarray
+    energy: np.ndarray
+
+
+@njit(cache=True, error_model="numpy")
+def one_sortie(n: int) -> Sorties:
+    """The sorties of a team without a battery: one each, no swap, energy not counted."""
+    return Sorties(np.ones(n, dtype=np.int64), np.zeros(n), np.full(n, np.nan))
+
+
 class RunRecord(NamedTuple):
     """One run as the kernel returns it (times in seconds; ``-1``: never)."""
 
@@ -76,6 +91,7 @@ class RunRecord(NamedTuple):
     work: int
     """The work the rule counted in ``obs.work`` (ConB: the nodes its route predictions
     expanded); 0 for a rule that counts none."""
+    sorties: Sorties
 
 
 @njit(cache=True, inline="always", error_model="numpy")

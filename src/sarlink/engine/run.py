@@ -3,6 +3,7 @@ kernel's record into a :class:`~sarlink.RunResult`."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -34,6 +35,7 @@ from sarlink.engine.codes import (
     STOP_CODES,
 )
 from sarlink.engine.critical_ranges import Critical, critical
+from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
 from sarlink.engine.hooks import RelayStrategy
 from sarlink.engine.params import CONTINUE, RELAY, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
@@ -120,6 +122,7 @@ class Prepared:
             relays=mission.team.relays,
             relay_priority=int(PRIORITY_CODES[mission.team.relay_priority]),
             relay_estimate=int(ESTIMATE_CODES[mission.team.relay_estimate]),
+            **battery_params(mission),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
@@ -138,7 +141,13 @@ class Prepared:
         relay strategy (if it has relays) and its chain to a found target (if
         ``on_detect = relay``)."""
         return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays,
-                          chain=self.params.on_detect == RELAY)
+                          chain=self.params.on_detect == RELAY, energy=self.energy)
+
+    @property
+    def energy(self) -> bool:
+        """Whether the team flies on batteries (``mission.battery``; the kernel with
+        :mod:`sarlink.engine.endurance`)."""
+        return math.isfinite(self.params.battery_j)
 
     def arguments(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                   traced_at: float | None = None, scan_at: Sequence[float] = ()
@@ -215,7 +224,7 @@ class Prepared:
                               positions=tr.positions, headings=tr.headings, knows=tr.knows,
                               bs_route=tr.bs_route, mode=tr.mode, links=unpack_links(tr.links))
         return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
-                          traj)
+                          traj, batteries=self.energy)
 
     def run_record(self, seed: int = 0, run: int = 0) -> RunRecord:
         """The kernel's own record of run ``run`` (with that run's own routes if the steering
@@ -236,7 +245,7 @@ class Prepared:
         (:meth:`run_ranges`)."""
         rule = self.steering.rule
         return (get_radio(self.mission.radio).range_free and self.params.on_detect == CONTINUE
-                and self.params.relays == 0
+                and self.params.relays == 0 and not self.energy
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
     def _own(self, seed: int, run: int) -> Prepared:
@@ -312,8 +321,10 @@ class Prepared:
         return out
 
 def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
-               trajectory: Trajectory | None = None) -> RunResult:
-    """The kernel's record of run ``run`` (seed ``seed``) as a :class:`~sarlink.RunResult`."""
+               trajectory: Trajectory | None = None, *, batteries: bool = False) -> RunResult:
+    """The kernel's record of run ``run`` (seed ``seed``) as a :class:`~sarlink.RunResult`;
+    ``batteries``: with the sorties of a team on batteries."""
+    flown = rec.sorties
     return RunResult(
         seed=seed, run=run, target=target,
         t_detect=None if rec.t_detect < 0 else rec.t_detect,
@@ -321,7 +332,39 @@ def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
         immediate=rec.immediate, detector=None if rec.detector < 0 else rec.detector,
         checkpoints=rec.checkpoints, reach_cum=rec.reach_cum, connected_cum=rec.conn_cum,
         depth=rec.depth, farthest=rec.farthest, trajectory=trajectory,
+        **({"sorties": flown.number, "ground_time": flown.ground, "energy": flown.energy}
+           if batteries else {}),
     )
+
+
+def battery_params(mission: Mission) -> dict[str, Any]:
+    """The kernel's battery scalars (:class:`~sarlink.engine.params.Params`) for ``mission``:
+    the energy model's power at ``V_m`` and hovering, a take-off's climb and a landing's descent
+    to and from the mission's altitude (at :data:`~sarlink.engine.energy.CLIMB_RATE` and
+    :data:`~sarlink.engine.energy.DESCENT_RATE`, as export predicts), the capacity and reserve
+    in joules; ``battery_j = inf`` without a battery."""
+    b = mission.battery
+    if b.battery_wh is None:
+        return {"battery_j": math.inf, "reserve_j": 0.0, "fly_w": 0.0, "hover_w": 0.0,
+                "climb_j": 0.0, "descent_j": 0.0, "swap_steps": 0, "spares": -1}
+    model = get_energy_model(mission.energy_model)
+    altitude = mission.channel.altitude
+    climb = model.vertical_power(CLIMB_RATE) * altitude / CLIMB_RATE
+    descent = model.vertical_power(-DESCENT_RATE) * altitude / DESCENT_RATE
+    capacity = b.battery_wh * 3600.0
+    fly, hover = model.power(mission.team.speed), model.power(0.0)
+    least = climb + descent + 3.0 * mission.timing.dt * max(fly, hover)
+    if capacity * (1.0 - b.reserve) <= least:
+        raise ConfigError(
+            f"battery.battery_wh = {b.battery_wh:g} with battery.reserve = {b.reserve:g} leaves "
+            f"{capacity * (1.0 - b.reserve) / 3600.0:.3g} Wh a sortie, and the climb to "
+            f"{altitude:g} m, the landing and three steps in the air take {least / 3600.0:.3g} "
+            f"Wh under {mission.energy_model}: allowed, more than "
+            f"{least / 3600.0 / (1.0 - b.reserve):.3g} Wh")
+    return {"battery_j": capacity, "reserve_j": b.reserve * capacity,
+            "fly_w": fly, "hover_w": hover,
+            "climb_j": climb, "descent_j": descent, "swap_steps": mission.steps(b.swap_time),
+            "spares": -1 if b.spares is None else b.spares}
 
 
 def unpack_links(bits: np.ndarray) -> np.ndarray:

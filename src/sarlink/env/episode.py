@@ -51,7 +51,8 @@ def stepping_mission(mission: Mission) -> Prepared:
     """``mission`` prepared for stepping: its planner must steer every drone by a distributed
     rule (the agents take its decisions and follow its schedule), and its runs stop at the
     BS's notification. Relays and the chain to a found target (``on_detect = relay``) are
-    refused: the agents are the drones, and a drone holding a point takes no direction."""
+    refused: the agents are the drones, and a drone holding a point takes no direction;
+    batteries too, for now (the stepping kernel is compiled without them)."""
     if mission.team.relays:
         raise ConfigError(f"team.relays = {mission.team.relays}: sarlink.env steers every drone "
                           "as a searcher and cannot take relays yet; allowed: team.relays = 0")
@@ -59,6 +60,9 @@ def stepping_mission(mission: Mission) -> Prepared:
         raise ConfigError("team.on_detect = 'relay': sarlink.env steers every drone as a "
                           "searcher and cannot take the chain's drones; allowed: continue, "
                           "report")
+    if mission.battery.battery_wh is not None:
+        raise ConfigError(f"battery.battery_wh = {mission.battery.battery_wh:g}: sarlink.env "
+                          "flies drones without batteries yet; allowed: no battery_wh")
     planner = get_planner(mission.team.planner)
     steering = planner.steering(mission)
     if steering.rule is None or not steering.distributed(mission.team.drones).all():

@@ -11,6 +11,10 @@ they sense and hear, so no file can hold their flight in advance: their simulate
 one run go into the team's GeoJSON for the briefing instead (:mod:`.geojson`). So do the
 relays' (``team.relays``): the BS chooses their points in the air, from what it hears of the
 searchers.
+
+With a battery (``battery.battery_wh``) each route is flown in sorties that each fit it
+(:mod:`.sorties`): one ``.plan`` and one ``.waypoints`` per sortie,
+``drone-00-sortie-1.plan``, ..., each sortie resuming where the last one turned home.
 """
 
 from __future__ import annotations
@@ -35,11 +39,13 @@ from sarlink.export.qgc import (
     plan_text,
     waypoints_text,
 )
+from sarlink.export.sorties import Sortie, battery_budget, split_route
 from sarlink.planners import get_planner
 from sarlink.simulation import simulate
 
-__all__ = ["DISTRIBUTED_NOTE", "RELAY_NOTE", "DroneExport", "TeamExport", "export_mission",
-           "mission_fence", "mission_frame"]
+__all__ = ["DISTRIBUTED_NOTE", "LEGAL_ALTITUDE", "MAX_ALTITUDE", "RELAY_NOTE", "DroneExport",
+           "SortieExport", "TeamExport", "check_altitude", "export_mission", "mission_fence",
+           "mission_frame"]
 
 DISTRIBUTED_NOTE = ("run a distributed rule: they decide where to fly in the air, from what "
                     "they sense and hear, so no file can hold their flight in advance; their "
@@ -50,6 +56,42 @@ RELAY_NOTE = ("hold the searchers' link to the BS: the BS chooses their points i
 
 TRACK_POINTS = 1000
 """About how many points of a simulated track the GeoJSON keeps (every k-th step)."""
+MAX_ALTITUDE = 1000.0
+"""Highest flight height above the BS, m, that an export takes: beyond what survey
+multirotors fly (ArduPilot's altitude fence, ``FENCE_ALT_MAX``, stops at 1000 m) and
+hundreds of metres above where a sensor finds a person."""
+LEGAL_ALTITUDE = 120.0
+"""The usual height limit for drones without a special permission, m (the EU's open
+category; 400 ft under the US Part 107): a higher export gets a note saying so."""
+
+
+def check_altitude(altitude: float) -> str | None:
+    """Refuse a height no multirotor survey flies (a :class:`ConfigError` naming
+    ``--altitude``); a note where it exceeds :data:`LEGAL_ALTITUDE`, else None."""
+    if not (math.isfinite(altitude) and 0 < altitude <= MAX_ALTITUDE):
+        raise ConfigError(f"--altitude must be a height above the BS > 0 m and at most "
+                          f"{MAX_ALTITUDE:g} m (no survey multirotor flies higher), got "
+                          f"{altitude:g}")
+    if altitude > LEGAL_ALTITUDE:
+        return (f"--altitude {altitude:g} m is above the {LEGAL_ALTITUDE:g} m that drones "
+                "may usually fly without a special permission (the EU's open category, 400 "
+                "ft under the US Part 107): check the rules where you fly")
+    return None
+
+
+@dataclass(frozen=True)
+class SortieExport:
+    """What was written for one sortie of a route drone."""
+
+    number: int
+    """1, 2, ... in the order they are flown."""
+    length: float
+    """Metres of level flight, the way out and home included."""
+    duration: float
+    """Seconds from take-off to landing (the climb and the descent included)."""
+    energy: float
+    """Joules under the mission's energy model (0 under ``none``)."""
+    files: tuple[Path, ...]
 
 
 @dataclass(frozen=True)
@@ -65,6 +107,8 @@ class DroneExport:
     flight_time: float
     """length / speed, s."""
     files: tuple[Path, ...] = ()
+    sorties: tuple[SortieExport, ...] = ()
+    """A route drone's flights (one without a battery)."""
 
 
 @dataclass(frozen=True)
@@ -107,13 +151,14 @@ def _length(points: np.ndarray) -> float:
 
 def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
                    firmware: Firmware = "px4", seed: int = 0, run: int = 0) -> TeamExport:
-    """Write the mission's upload files and its team GeoJSON into ``folder``.
+    """Write the mission's upload files and its team GeoJSON into ``folder`` (created if
+    missing), every file computed before the first is written: on bad input nothing is.
 
     ``altitude`` is the flight height above the BS, m; ``seed`` and ``run`` choose the run
-    whose simulated tracks stand for the distributed drones and the relays.
+    whose simulated tracks stand for the distributed drones and the relays. With a battery,
+    each route drone's route is cut into sorties (:mod:`.sorties`).
     """
-    if not (math.isfinite(altitude) and altitude > 0):
-        raise ConfigError(f"--altitude must be a height above the BS > 0 m, got {altitude:g}")
+    notes = [note for note in (check_altitude(altitude),) if note]
     frame = mission_frame(mission)
     fence = mission_fence(mission, frame)
     steering = get_planner(mission.team.planner).steering(mission.searching())
@@ -121,28 +166,37 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
     bs = np.asarray(mission.area.bs_xy, dtype=float)
     home = (float(frame.anchor[0]), float(frame.anchor[1]))
     routes = list(steering.routes) + [np.empty((0, 2))] * (n - len(steering.routes))
+    battery = battery_budget(mission) is not None
+    texts: dict[Path, str] = {}
     drones: list[DroneExport] = []
     paths: dict[int, tuple[str, np.ndarray]] = {}
+    legs: list[tuple[int, int, np.ndarray, Sortie]] = []
     searchers = n - mission.team.relays
     for i, route in enumerate(routes):
         if len(route) == 0:
             continue
         local = np.asarray(route, dtype=float)
-        lon, lat = frame.to_lonlat(local[:, 0], local[:, 1])
-        flight = Route(home, np.column_stack([lon, lat]), altitude, speed)
-        stem = folder / f"drone-{i:02d}"
-        plan, wpl = stem.with_suffix(".plan"), stem.with_suffix(".waypoints")
-        plan.write_text(plan_text(flight, firmware, fence), encoding="utf-8")
-        wpl.write_text(waypoints_text(flight), encoding="utf-8")
+        sorties = []
+        for k, sortie in enumerate(split_route(mission, i, local, altitude), start=1):
+            lon, lat = frame.to_lonlat(sortie.waypoints[:, 0], sortie.waypoints[:, 1])
+            flight = Route(home, np.column_stack([lon, lat]), altitude, speed)
+            stem = folder / (f"drone-{i:02d}-sortie-{k}" if battery else f"drone-{i:02d}")
+            plan, wpl = stem.with_suffix(".plan"), stem.with_suffix(".waypoints")
+            texts[plan] = plan_text(flight, firmware, fence)
+            texts[wpl] = waypoints_text(flight)
+            sorties.append(SortieExport(k, sortie.flight.length, sortie.flight.duration,
+                                        sortie.energy, (plan, wpl)))
+            if battery:
+                legs.append((i, k, np.vstack([bs, sortie.waypoints]), sortie))
         length = _length(np.vstack([bs, local]))
-        drones.append(DroneExport(i, "route", length, length / speed, (plan, wpl)))
+        files = tuple(p for s in sorties for p in s.files)
+        drones.append(DroneExport(i, "route", length, length / speed, files, tuple(sorties)))
         paths[i] = ("route", np.vstack([bs, local]))
-    notes = []
     fence_file: Path | None = None
     most = max(len(ring) for _, ring in fence.polygons())
     if most <= ARDUPILOT_MAX_VERTICES:
         fence_file = folder / "fence.waypoints"
-        fence_file.write_text(fence_text(fence), encoding="utf-8")
+        texts[fence_file] = fence_text(fence)
     else:
         notes.append(f"no fence.waypoints: a polygon of the area has {most} vertices and "
                      f"ArduPilot takes at most {ARDUPILOT_MAX_VERTICES}; simplify the area "
@@ -170,7 +224,21 @@ def export_mission(mission: Mission, folder: Path, *, altitude: float = 50.0,
             notes.append(f"the relays, drones {', '.join(map(str, relays))}, {RELAY_NOTE} "
                          f"{which}")
     geojson = folder / "team.geojson"
-    geojson.write_text(json.dumps(team_geojson(mission, frame, paths, speed), indent=1),
-                       encoding="utf-8")
+    texts[geojson] = json.dumps(team_geojson(mission, frame, paths, speed, [
+        (i, k, points, {"length_m": round(s.flight.length, 1),
+                        "duration_s": round(s.flight.duration, 1),
+                        "energy_wh": round(s.energy / 3600.0, 2)})
+        for i, k, points, s in legs]), indent=1)
+    _write(folder, texts)
     drones.sort(key=lambda d: d.drone)
     return TeamExport(folder, geojson, tuple(drones), fence_file, tuple(notes))
+
+
+def _write(folder: Path, texts: dict[Path, str]) -> None:
+    """Create ``folder`` if missing and write every file into it."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ConfigError(f"--out {folder}: cannot create the folder ({exc.strerror})") from None
+    for path, text in texts.items():
+        path.write_text(text, encoding="utf-8")

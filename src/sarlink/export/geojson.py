@@ -4,6 +4,7 @@ and flight time."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -36,10 +37,14 @@ def _feature(geometry: dict[str, Any], **props: Any) -> dict[str, Any]:
 
 
 def team_geojson(mission: Mission, frame: Frame, paths: dict[int, tuple[str, np.ndarray]],
-                 speed: float) -> dict[str, Any]:
+                 speed: float,
+                 sorties: Sequence[tuple[int, int, np.ndarray, dict[str, float]]] = ()
+                 ) -> dict[str, Any]:
     """The FeatureCollection of a team's mission; ``paths[i]`` is drone ``i``'s kind and its
     points in the mission's frame (from the BS). A drone's ``task`` is ``relay`` for the
-    team's last ``team.relays`` drones, else ``searcher``."""
+    team's last ``team.relays`` drones, else ``searcher``. ``sorties`` are the battery-sized
+    flights of route drones: drone, number, points (from the BS to the BS) and properties
+    (length, duration, energy), each a feature of role ``sortie``."""
     region = mission.region
     area = area_polygon(region, mission.area.size)
     features = [_feature(_polygon(frame, Polygon(area.exterior)), role="area",
@@ -61,5 +66,8 @@ def team_geojson(mission: Mission, frame: Frame, paths: dict[int, tuple[str, np.
                                  task="relay" if drone >= searchers else "searcher",
                                  length_m=round(length, 1),
                                  flight_time_s=round(length / speed, 1)))
+    features += [_feature({"type": "LineString", "coordinates": _lonlat(frame, points)},
+                          role="sortie", drone=drone, sortie=number, **props)
+                 for drone, number, points, props in sorties]
     return {"type": "FeatureCollection", "name": f"sarlink: {mission.team.planner}, "
             f"{mission.team.drones} drones", "features": features}
