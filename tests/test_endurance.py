@@ -67,9 +67,9 @@ def _powers(mission: Mission) -> tuple[float, float, float, float]:
 def rebuilt_energy(mission: Mission, result: RunResult) -> tuple[np.ndarray, np.ndarray]:
     """Each drone's energy left after every step it spent in the air, J (NaN for a step on
     the ground), and its energy drawn, rebuilt from the trajectory alone: a take-off gives a
-    full battery less the climb; a step in the air (or the one it took off or landed in)
-    costs the flying power for the time the way it came takes at V_m and the holding power
-    for the rest; a landing the descent."""
+    full battery less the climb (at the start of a step: the step is flown); a step in the
+    air (or the one it landed in) costs the flying power for the time the way it came takes
+    at V_m and the holding power for the rest; a landing the descent."""
     fly, hold, climb, descent = _powers(mission)
     capacity = mission.battery.battery_wh * 3600.0
     tr = result.trajectory
@@ -82,9 +82,9 @@ def rebuilt_energy(mission: Mission, result: RunResult) -> tuple[np.ndarray, np.
     energy = np.full(n, capacity - climb)
     for k in range(1, steps):
         for i in range(n):
-            if landed[k - 1, i] and landed[k, i]:
+            if landed[k - 1, i]:  # on the ground from step k - 1 to k
                 continue
-            if landed[k - 1, i]:  # took off at step k - 1
+            if k > 1 and landed[k - 2, i]:  # took off at the start of step k - 1
                 energy[i] = capacity - climb
                 used[i] += climb
             way = float(np.hypot(*(tr.positions[k, i] - tr.positions[k - 1, i])))
@@ -117,7 +117,8 @@ def test_no_drone_flies_on_its_reserve(wh: float, reserve: float, swap: float, r
 def test_a_route_drone_resumes_where_it_left_its_route() -> None:
     """Two mTSP drones whose tours outlast a 25-minute battery: each turns home, swaps, flies
     back to where it left its tour and flies the rest of it, so it passes over every waypoint
-    of its tour in order, as without a battery, only later."""
+    of its tour in order, as without a battery, only later (within a step of each: it passes
+    them between the steps recorded)."""
     mission = Mission.build(planner="mtsp", drones=2, rc=500.0, battery_wh=70.0,
                             energy_model="zeng2019", mtsp_plan="shared", iterations=200,
                             horizon=8000.0, flight_time=8000.0)
@@ -130,13 +131,14 @@ def test_a_route_drone_resumes_where_it_left_its_route() -> None:
         turned = np.flatnonzero((tr.mode[1:, i] == Mode.RETURNING)
                                 & (tr.mode[:-1, i] != Mode.RETURNING))
         assert turned.size == result.sorties[i] - 1  # the tour ends before the next is due
+        step = mission.team.speed * mission.timing.dt  # a point passed mid-step: within one
         for k in turned:  # the point it left is flown over again after the swap
             later = np.hypot(*(tr.positions[k + 2:, i] - tr.positions[k, i]).T)
-            assert later.min() < 1e-6
+            assert later.min() <= step + 1e-6
         k = 0
         for w in route:  # every waypoint, in order
             d = np.hypot(*(tr.positions[k:, i] - w).T)
-            assert d.min() < 1e-6, (i, w)
+            assert d.min() <= step + 1e-6, (i, w)
             k += int(np.argmin(d))
 
 
