@@ -91,8 +91,8 @@ def main(runs: int) -> str:
              f"{wh:.1f} Wh, {MINUTES:g} minutes of hover under {MODEL} "
              f"({get_energy_model(MODEL).power(0.0):.1f} W; "
              f"{get_energy_model(MODEL).power(5.0):.1f} W at 5 m/s), reserve 0.2, swap 120 s. "
-             "P_s(t_d) = share of runs notified by t_d (± one binomial standard error); sorties and "
-             "ground time: per drone, mean over the runs.", "",
+             "P_s(t_d) = share of runs notified by t_d (± one binomial standard error); sorties "
+             "and ground time: per drone, mean over the runs.", "",
              "| team | " + " | ".join(f"P_s({td:g} s)" for td in TDS)
              + " | sorties per drone | swap time per drone, s |",
              "|---|" + "---|" * (len(TDS) + 2)]
