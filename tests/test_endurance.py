@@ -121,7 +121,7 @@ def test_a_route_drone_resumes_where_it_left_its_route() -> None:
     them between the steps recorded)."""
     mission = Mission.build(planner="mtsp", drones=2, rc=500.0, battery_wh=70.0,
                             energy_model="zeng2019", mtsp_plan="shared", iterations=200,
-                            horizon=8000.0, flight_time=8000.0)
+                            horizon=12000.0, flight_time=12000.0)
     routes = prepare(mission).steering.routes
     result = simulate(mission, seed=1, run=0, trajectory=True)
     tr = result.trajectory

@@ -13,6 +13,7 @@ from typer.testing import CliRunner
 
 from sarlink import Experiment, Mission
 from sarlink.cli import app
+from sarlink.cli.common import console
 from sarlink.config.region import area_polygon
 from sarlink.export import mission_frame
 
@@ -149,13 +150,16 @@ def test_bad_map_input_is_one_line(tmp_path: Path, args: list[str], words: list[
     assert not (tmp_path / "p").exists()  # nothing written, not even the folder
 
 
-def test_export_flies_a_battery_in_sorties_and_tables_them(tmp_path: Path) -> None:
+def test_export_flies_a_battery_in_sorties_and_tables_them(tmp_path: Path,
+                                                        monkeypatch: pytest.MonkeyPatch) -> None:
     """The docs' example: each sortie's files, length, duration and energy in the table, the
     battery's rule and each drone's time with swaps below it, a note above 120 m."""
+    # a terminal 200 wide: the console takes its width once, from COLUMNS when it is made
+    # (pytest-xdist's workers set it to 80), so the table's cells are not wrapped
+    monkeypatch.setattr(console, "width", 200)
     out = runner.invoke(app, ["export", "--area", AREA, "--planner", "mtsp", "--drones", "2",
                               "--speed", "8", "--battery-wh", "70", "--energy-model",
-                              "zeng2019", "--altitude", "150", "--out", str(tmp_path / "p")],
-                        env={"COLUMNS": "200"})
+                              "zeng2019", "--altitude", "150", "--out", str(tmp_path / "p")])
     assert out.exit_code == 0, out.output
     names = sorted(p.name for p in (tmp_path / "p").iterdir())
     assert names == [f"drone-0{i}-sortie-{k}.{ext}" for i in (0, 1) for k in (1, 2, 3)
