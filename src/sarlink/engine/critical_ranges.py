@@ -87,7 +87,7 @@ class Critical(NamedTuple):
     """``(ranges, checkpoints)``: its farthest drone at each squared range."""
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def _effective(dd: float, fade: float) -> float:
     """The smallest ``R2 >= 0`` with ``fl(R2 * fade) >= dd``: the link's key under a fade."""
     x = dd / fade

@@ -15,7 +15,7 @@ FAR = 1e18
 """Where the padding nodes sit: farther than any range, so no link or sensing bit is set."""
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
     """``(x, y)`` scaled to length 1, or the fallback ``(fx, fy)`` if it vanishes."""
     n = math.sqrt(x * x + y * y)
@@ -24,7 +24,7 @@ def unit(x: float, y: float, fx: float, fy: float) -> tuple[float, float]:
     return x / n, y / n
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def d2(xa: float, ya: float, za: float, xb: float, yb: float, zb: float) -> float:
     """The squared distance from node a to node b, in the link pass's arithmetic
     (:func:`sarlink.engine.graph.links`), whose bits every other test of a link must match."""
@@ -34,7 +34,7 @@ def d2(xa: float, ya: float, za: float, xb: float, yb: float, zb: float) -> floa
     return dx * dx + dy * dy + dz * dz
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def inside(x: float, y: float, size: float) -> bool:
     """Whether ``(x, y)`` lies in the square area ``[0, size]²``."""
     return 0.0 <= x <= size and 0.0 <= y <= size
@@ -45,7 +45,7 @@ TURNED = 1e-9
 round in their last bits."""
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def turned(hx: float, hy: float, nx: float, ny: float) -> bool:
     """Whether the unit heading ``(nx, ny)`` is another than ``(hx, hy)``, by more than
     :data:`TURNED`."""

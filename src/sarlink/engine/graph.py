@@ -27,7 +27,7 @@ _DEBRUIJN_INDEX = np.array(
      11, 46, 26, 40, 15, 34, 20, 31, 10, 25, 14, 19, 9, 13, 8, 7, 6], dtype=np.int64)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def bit(word: np.uint64, a: int) -> bool:
     """Whether node ``a``'s bit is set in ``word``, the bitset word that holds it (for loops
     that must not hand arrays to helpers, see :func:`sarlink.planners.rules.conb.conb_headings`)."""
@@ -117,7 +117,7 @@ def links(
                 near[a, w] = close
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def lowest(bits: np.uint64) -> int:
     """Index of the lowest set bit of a non-zero word."""
     return _DEBRUIJN_INDEX[((bits & (~bits + _ONE)) * _DEBRUIJN) >> np.uint64(58)]
@@ -190,7 +190,7 @@ def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.nda
     return has(spread, n)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def part_of_bs(parked: int, mode: int) -> bool:
     """Whether a drone in ``mode`` counts as part of the BS: landed there, with
     ``readings.parked = base`` (``parked``, :class:`~sarlink.engine.codes.Parked`)."""

@@ -21,7 +21,7 @@ from sarlink.engine.params import (
 )
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def farthest_home(p: Params) -> float:
     """The flight home from the area's farthest corner, m (plus 1 m of margin): no drone
     inside the area is farther, so the return-home test cannot fire before it is due."""

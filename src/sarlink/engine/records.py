@@ -94,14 +94,14 @@ class RunRecord(NamedTuple):
     sorties: Sorties
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def no_ranges(cp_steps: np.ndarray) -> AtRanges:
     """The records at no range: a run not scanned at several ranges."""
     empty = np.empty((0, cp_steps.shape[0]))
     return AtRanges(np.full(0, -1, dtype=np.int64), empty, empty, empty, empty)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def new_track(steps: int, n: int, nw: int, position_steps: int = 0) -> Track:
     """Room for ``steps`` recorded steps of ``n`` drones (``nw`` bitset words per row), and
     for the positions and modes of ``position_steps`` steps if more (a traced run)."""
@@ -154,7 +154,7 @@ def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarra
     return ci
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def network(adj: np.ndarray, mode: np.ndarray, parked: int, px: np.ndarray, py: np.ndarray,
             bs_x: float, bs_y: float) -> tuple[int, float]:
     """The BS's network of this step: its depth, the largest hop count from the BS to a drone

@@ -49,7 +49,7 @@ def fade_bias(sigma: float, pathloss_exponent: float, calibration: str) -> float
     return -0.5 * spread * spread
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def disc_ranges(rc: float, m: int, mp: int) -> np.ndarray:
     """Squared link ranges ``rc²`` among the ``m`` nodes; none to the padding."""
     thr2 = np.zeros((m, mp))
@@ -57,7 +57,7 @@ def disc_ranges(rc: float, m: int, mp: int) -> np.ndarray:
     return thr2
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def draw_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator) -> None:
     """Redraw the per-link squared range: ``10 n log10(d/rc) + S <= 0  <=>  d² <= rc² 10^(-S/5n)``.
 
@@ -86,7 +86,7 @@ def init(p: Params, rp: np.ndarray, m: int, mp: int) -> np.ndarray:
     return thr2
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def drift_shadowing(thr2: np.ndarray, p: Params, rng: np.random.Generator, first: bool) -> None:
     """One step of the correlated fades: ``z <- rho z + sqrt(1 - rho²) e`` (``z = e`` at the
     first step), ``rho`` by the number of drone ends of the link, then the ranges."""
