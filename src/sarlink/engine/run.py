@@ -35,7 +35,7 @@ from sarlink.engine.codes import (
     STOP_CODES,
 )
 from sarlink.engine.critical_ranges import Critical, critical
-from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
+from sarlink.engine.energy import get_energy_model
 from sarlink.engine.hooks import RelayStrategy
 from sarlink.engine.params import CONTINUE, RELAY, STOP_DETECTED, STOP_NOTIFIED, Params
 from sarlink.engine.paths import Navigation
@@ -349,8 +349,7 @@ def battery_params(mission: Mission) -> dict[str, Any]:
                 "climb_j": 0.0, "descent_j": 0.0, "swap_steps": 0, "spares": -1}
     model = get_energy_model(mission.energy_model)
     altitude = mission.channel.altitude
-    climb = model.vertical_power(CLIMB_RATE) * altitude / CLIMB_RATE
-    descent = model.vertical_power(-DESCENT_RATE) * altitude / DESCENT_RATE
+    climb, descent = model.climb(altitude), model.descent(altitude)
     capacity = b.battery_wh * 3600.0
     fly, hover = model.power(mission.team.speed), model.power(0.0)
     least = climb + descent + 3.0 * mission.timing.dt * max(fly, hover)

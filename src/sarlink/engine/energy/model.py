@@ -79,6 +79,14 @@ class EnergyModel:
         """Power flying straight up (``vz > 0``) or down (``vz < 0``), W."""
         return float(python_function(self.vertical)(float(vz), self.array))
 
+    def climb(self, altitude: float) -> float:
+        """Joules of a take-off's climb to ``altitude`` (m) at :data:`CLIMB_RATE`."""
+        return self.vertical_power(CLIMB_RATE) * altitude / CLIMB_RATE
+
+    def descent(self, altitude: float) -> float:
+        """Joules of a landing's descent from ``altitude`` (m) at :data:`DESCENT_RATE`."""
+        return self.vertical_power(-DESCENT_RATE) * altitude / DESCENT_RATE
+
     def per_metre(self, speed: float) -> float:
         """Energy per metre of level flight at ``speed > 0``, J/m."""
         return self.power(speed) / speed
@@ -110,9 +118,8 @@ class Flight:
     def energy(self, model: EnergyModel) -> float:
         """Joules the flight takes under ``model``: the climb at :data:`CLIMB_RATE`, the
         level flight, the descent at :data:`DESCENT_RATE`."""
-        up = model.vertical_power(CLIMB_RATE) * self.altitude / CLIMB_RATE
-        down = model.vertical_power(-DESCENT_RATE) * self.altitude / DESCENT_RATE
-        return up + model.power(self.speed) * self.length / self.speed + down
+        return model.climb(self.altitude) + model.power(self.speed) * self.length / self.speed \
+            + model.descent(self.altitude)
 
 
 def _argmin(f: Callable[[float], float], lo: float, hi: float) -> float:
