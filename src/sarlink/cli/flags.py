@@ -26,24 +26,13 @@ from pathlib import Path
 from typing import Annotated, Any, Literal, get_args, get_origin
 
 import typer
-from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
 from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
-from sarlink.config.mission import (
-    ENERGY_MODEL_WITH_BATTERY,
-    Area,
-    Battery,
-    Channel,
-    MtspSettings,
-    Readings,
-    Sensing,
-    Team,
-    Timing,
-)
-from sarlink.engine import relay_strategy_names
+from sarlink.config.mission import ENERGY_MODEL_WITH_BATTERY, flat_groups
+from sarlink.engine import relay_strategy_names, target_motion_names
 from sarlink.engine.energy import energy_model_names
 from sarlink.planners import planner_names
 from sarlink.simulation import check_mission
@@ -94,10 +83,7 @@ class Flag:
 
 
 def _field(param: str) -> FieldInfo:
-    models: dict[str, type[BaseModel]] = {
-        "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "readings": Readings, "mtsp": MtspSettings, "battery": Battery}
-    return models[param_groups()[param]].model_fields[param]
+    return flat_groups()[param_groups()[param]].model_fields[param]
 
 
 def allowed(field: FieldInfo) -> str:
@@ -177,6 +163,15 @@ FLAGS: tuple[Flag, ...] = _rows(
      {*ONE_RUN, "design"}),
     ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
      "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
+    ("--target-motion", str, "how the target moves: "
+     f"{', '.join(target_motion_names())} (docs/model.md, Target motion)", "motion", ONE_RUN),
+    ("--delay", float, "seconds from the last sighting to take-off, in which the target "
+     "moves (a multiple of --dt)", "delay", ONE_RUN),
+    ("--walk-speed", float, "walk: the lost person's speed, m/s", "walk_speed", ONE_RUN),
+    ("--walk-turn", float, "walk: the spread of the heading's change over a minute, rad",
+     "walk_turn", ONE_RUN),
+    ("--walk-mobile", float, "walk: the median time the person keeps moving, s",
+     "walk_mobile", ONE_RUN),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN | {"design"}, apply=_read),
