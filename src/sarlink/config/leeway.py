@@ -94,43 +94,64 @@ LEEWAY_CLASSES: dict[str, LeewayClass] = {c.name: c for c in (
 """The supported object classes by OBJECTPROP.DAT's key."""
 
 
-def leeway_class(name: str, field: str = "drift_object") -> LeewayClass:
+def leeway_class(name: str) -> LeewayClass:
     """The class named ``name``; a :class:`ConfigError` naming it and the known ones else."""
     if name not in LEEWAY_CLASSES:
-        raise ConfigError(f"{field}: unknown Leeway object class {name!r}; known: "
+        raise ConfigError(f"unknown Leeway object class {name!r}; known: "
                           f"{', '.join(LEEWAY_CLASSES)}")
     return LEEWAY_CLASSES[name]
 
 
-def _number(value: Any) -> float | None:
-    if isinstance(value, bool) or not isinstance(value, int | float):
+ALLOWED = ("a pair east,north (m/s) or a table of rows t,east,north (s, m/s, m/s) with "
+           "increasing times, as an array or as text with rows separated by ';'")
+"""What a forcing table may be, for messages."""
+
+
+def _floats(row: list[Any]) -> list[float] | None:
+    """The finite numbers of ``row`` (numbers or their text), or None if one is not."""
+    out = []
+    for value in row:
+        if isinstance(value, bool) or not isinstance(value, int | float | str):
+            return None
+        try:
+            number = float(value)
+        except ValueError:
+            return None
+        if not math.isfinite(number):
+            return None
+        out.append(number)
+    return out
+
+
+def _rows(value: Any) -> list[list[Any]] | None:
+    """The rows of ``value``: text ``"e,n"`` or ``"t,e,n; t,e,n"``, a pair, or rows."""
+    if isinstance(value, str):
+        return [row.split(",") for row in value.split(";")] if value.strip() else None
+    if not isinstance(value, Sequence) or len(value) == 0:
         return None
-    number = float(value)
-    return number if math.isfinite(number) else None
+    if all(not isinstance(v, Sequence) for v in value):
+        return [list(value)]
+    if any(isinstance(row, str) or not isinstance(row, Sequence) for row in value):
+        return None
+    return [list(row) for row in value]
 
 
-def forcing_table(value: Any, field: str) -> Forcing:
+def forcing_table(value: Any) -> Forcing:
     """``value`` as a forcing table: a pair ``(east, north)`` is the constant ``((0, east,
-    north),)``; a sequence of rows ``(t, east, north)`` must have increasing times. Anything
-    else is a :class:`ConfigError` naming ``field``, what was given and what is allowed."""
-    allowed = ("a pair (east, north) in m/s or a table of rows (t, east, north) in s, m/s, m/s "
-               "with increasing times")
-    bad = ConfigError(f"{field}: expected {allowed}, got {value!r}")
-    if not isinstance(value, Sequence) or isinstance(value, str) or len(value) == 0:
-        raise bad
-    pair = [_number(v) for v in value] if len(value) == 2 else []
-    if pair and None not in pair:
-        return ((0.0, float(value[0]), float(value[1])),)
-    rows = []
-    for row in value:
-        if not isinstance(row, Sequence) or isinstance(row, str) or len(row) != 3:
-            raise bad
-        numbers = [_number(v) for v in row]
-        if None in numbers:
-            raise bad
-        rows.append((float(row[0]), float(row[1]), float(row[2])))
-    for before, after in pairwise(rows):
+    north),)``; rows ``(t, east, north)`` must have increasing times; text gives the same
+    with commas between numbers and ``;`` between rows. Anything else is a
+    :class:`ConfigError` saying what is allowed."""
+    numbers = [_floats(row) for row in _rows(value) or []]
+    rows = [row for row in numbers if row is not None]
+    if not rows or len(rows) < len(numbers):
+        raise ConfigError(f"expected {ALLOWED}")
+    if len(rows) == 1 and len(rows[0]) == 2:
+        return ((0.0, rows[0][0], rows[0][1]),)
+    if any(len(row) != 3 for row in rows):
+        raise ConfigError(f"expected {ALLOWED}")
+    table = tuple((t, e, n) for t, e, n in rows)
+    for before, after in pairwise(table):
         if after[0] <= before[0]:
-            raise ConfigError(f"{field}: times out of order ({after[0]:g} s after "
-                              f"{before[0]:g} s) in {value!r}; {allowed}")
-    return tuple(rows)
+            raise ConfigError(f"times out of order ({after[0]:g} s after {before[0]:g} s); "
+                              f"expected {ALLOWED}")
+    return table

@@ -57,7 +57,7 @@ def drift_params(object_class: str, wind: Forcing, current: Forcing,
                  jibe_per_hour: float = JIBE_PER_HOUR) -> np.ndarray:
     """The hooks' parameter array for ``object_class`` under ``wind`` and ``current``
     (each a pair or a table, :func:`sarlink.config.leeway.forcing_table`)."""
-    w, c = forcing_table(wind, "drift_wind"), forcing_table(current, "drift_current")
+    w, c = forcing_table(wind), forcing_table(current)
     head = [*leeway_class(object_class).coefficients, jibe_per_hour, len(w), len(c)]
     return np.array(head + [v for row in (*w, *c) for v in row], dtype=float)
 
