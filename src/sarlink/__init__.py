@@ -23,10 +23,13 @@ from sarlink.engine import (
     RadioModel,
     RelayStrategy,
     Scenario,
+    TargetMotion,
     radio_names,
     register_radio,
     register_relay_strategy,
+    register_target_motion,
     relay_strategy_names,
+    target_motion_names,
 )
 from sarlink.engine.energy import EnergyModel, energy_model_names, register_energy_model
 from sarlink.planners import (
@@ -97,6 +100,7 @@ __all__ = [
     "RunResult",
     "Scenario",
     "Sensing",
+    "TargetMotion",
     "Team",
     "Timing",
     "Trajectory",
@@ -112,8 +116,10 @@ __all__ = [
     "register_planner",
     "register_radio",
     "register_relay_strategy",
+    "register_target_motion",
     "relay_strategy_names",
     "replay",
     "simulate",
     "sweep",
+    "target_motion_names",
 ]

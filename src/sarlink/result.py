@@ -28,6 +28,9 @@ class Trajectory:
     links: np.ndarray
     """(steps, N + 2, N + 2) whether two nodes are linked (drones ``0 .. N-1``, the BS ``N``,
     the target ``N + 1``), as the links were at that step (with shadowing, as drawn)"""
+    target: np.ndarray | None = None
+    """(steps, 1, 2) metres: a moving target's position at every step (None: the target
+    stands still at :attr:`RunResult.target`)"""
 
 
 @dataclass(frozen=True)

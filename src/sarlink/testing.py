@@ -18,7 +18,11 @@ helper flies or calls a registered plug-in and raises an ``AssertionError`` nami
 - :func:`check_energy_model`: an :class:`~sarlink.EnergyModel`'s hooks compile with Numba
   (the kernel calls them compiled) and give there what they give in Python; its powers are
   finite and never negative, the same hovering in level flight and straight up or down at
-  speed 0, and a model that draws power draws it at every speed.
+  speed 0, and a model that draws power draws it at every speed;
+- :func:`check_target_motion`: a :class:`~sarlink.TargetMotion`'s hooks compile with Numba
+  and move targets there as in Python, ``start`` does not move a target, positions stay
+  finite, the same draws give the same tracks, and a model declared ``on_land`` keeps every
+  target inside the square and inside an area with a hole, out of the hole.
 
 In a plug-in's test suite::
 
@@ -42,19 +46,22 @@ from numba import njit
 
 from sarlink.config import Mission, Readings
 from sarlink.engine import Observation, Prepared, RadioModel, Steering, get_radio
+from sarlink.engine.area import contains as area_contains
+from sarlink.engine.area import edge_array
 from sarlink.engine.codes import Mode
 from sarlink.engine.energy import get_energy_model
 from sarlink.engine.geometry import FAR, PAD
 from sarlink.engine.hooks import DistributedRule
 from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.relays import none as no_relays
+from sarlink.engine.target_motion import get_target_motion
 from sarlink.planners import get_planner
 from sarlink.playback import replay
 from sarlink.result import RunResult
 from sarlink.simulation import prepare, simulate
 
 __all__ = ["check_energy_model", "check_planner", "check_radio", "check_relay_strategy",
-           "check_rule", "check_run"]
+           "check_rule", "check_run", "check_target_motion"]
 
 SPEEDS = np.linspace(0.0, 40.0, 81)
 """Ground speeds (m/s) an energy model's level hook is called at: hover to beyond any
@@ -337,3 +344,58 @@ def check_energy_model(name: str) -> None:
         assert np.isclose(model.vertical_power(vz), hover, rtol=1e-12, atol=0.0), (
             f"energy model {name!r}: vertical({vz}) = {model.vertical_power(vz)!r} is not "
             f"level(0) = {hover!r}, the hover power")
+
+
+def _walls(size: float) -> dict[str, np.ndarray]:
+    """The areas a target-motion model is checked in, as the kernel has them: the square
+    (no edges) and the square with a square hole in its middle third."""
+    a, b = size / 3.0, 2.0 * size / 3.0
+    outline = np.array([[0.0, 0.0], [size, 0.0], [size, size], [0.0, size], [0.0, 0.0]])
+    hole = np.array([[a, a], [a, b], [b, b], [b, a], [a, a]])
+    return {"the square": np.empty((0, 4)), "the square with a hole": edge_array([outline, hole])}
+
+
+def _inside(x: float, y: float, edges: np.ndarray, size: float) -> bool:
+    if edges.shape[0] == 0:
+        return 0.0 <= x <= size and 0.0 <= y <= size
+    return bool(area_contains.py_func(x, y, edges))
+
+
+def check_target_motion(name: str, *, targets: int = 12, steps: int = 300, seed: int = 7,
+                        **params: Any) -> None:
+    """Move ``targets`` targets of the registered target-motion model ``name`` for ``steps``
+    steps from points of the mission's area, compiled and in Python, and check the contract
+    (module docstring). ``params`` are further flat mission parameters (``delay=600.0``)."""
+    model = get_target_motion(name)
+    if not model.moves:
+        return
+    mission = Mission.build(motion=name, **params)
+    tp, dt, size = model.array(mission), mission.timing.dt, mission.area.size
+    assert model.start is not None and model.move is not None
+    compiled = [f if hasattr(f, "py_func") else njit(f) for f in (model.start, model.move)]
+    starts = np.random.default_rng(seed).uniform(0.05, 0.3, size=(targets, 2)) * size
+    for where, edges in _walls(size).items():
+        for j, first in enumerate(starts):
+            tracks = []
+            for start, move in (compiled, [f.py_func for f in compiled]):
+                rng = np.random.default_rng([seed, j])
+                xy, state = first.copy(), np.zeros(model.state)
+                start(xy, state, tp, rng)
+                assert np.array_equal(xy, first), (
+                    f"target motion {name!r}: start moved the target from {tuple(first)} to "
+                    f"{tuple(xy)}")
+                track = [xy.copy()]
+                for k in range(steps):
+                    move(xy, state, k * dt, dt, tp, edges, size, rng)
+                    track.append(xy.copy())
+                tracks.append(np.array(track))
+            fast, slow = tracks
+            assert np.isfinite(fast).all(), f"target motion {name!r}: a position is not finite"
+            assert np.allclose(fast, slow, rtol=1e-9, atol=1e-6), (
+                f"target motion {name!r} moves target {j} in {where} to "
+                f"{tuple(fast[-1])} compiled but to {tuple(slow[-1])} in Python")
+            if model.on_land:
+                for k, (x, y) in enumerate(fast):
+                    assert _inside(x, y, edges, size), (
+                        f"target motion {name!r} is declared on_land but target {j} is at "
+                        f"({x:.1f}, {y:.1f}), outside {where}, after {k} steps")

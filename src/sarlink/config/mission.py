@@ -281,6 +281,20 @@ class Battery(Checked):
         "A drone that lands for a swap when none is left stays parked")
 
 
+class Target(Checked):
+    """The target and how it moves (beyond the paper, whose target stays where it is drawn;
+    docs/model.md, Target motion). The prior (uniform, or ``region.zones``) is where it was
+    last seen; it moves from there for ``delay`` seconds before take-off, then on."""
+
+    motion: str = Field(
+        "still", min_length=1,
+        description="how the target moves, by name (sarlink.engine.target_motion."
+        "target_motion_names()): still, the paper's; walk, a lost person on land")
+    delay: float = Field(
+        0.0, ge=0, description="seconds between the last sighting and take-off, during which "
+        "the target moves (a multiple of timing.dt)")
+
+
 class MtspSettings(Checked):
     """How mTSP plans are made (Section 3.1.1): solver, objective and GA settings.
 
@@ -330,6 +344,7 @@ class Mission(Checked):
     readings: Readings = Field(default_factory=Readings)
     mtsp: MtspSettings = Field(default_factory=MtspSettings)
     battery: Battery = Field(default_factory=Battery)
+    target: Target = Field(default_factory=Target)
     region: Region | None = Field(
         None, description="a polygon area, holes, a target prior and a place on the map "
         "(sarlink.config.region); None: the paper's square and uniform target")
@@ -347,14 +362,17 @@ class Mission(Checked):
 
     @model_serializer(mode="wrap")
     def _without_default_region(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
-        """Leave out ``region`` when it is None and ``battery`` when it is the default: the
-        paper's missions serialise, and so hash (:func:`sarlink.config.mission_hash`, the names
-        of result folders), as before regions and batteries."""
+        """Leave out ``region`` when it is None and ``battery`` and ``target`` when they are
+        the default: the paper's missions serialise, and so hash
+        (:func:`sarlink.config.mission_hash`, the names of result folders), as before regions,
+        batteries and moving targets."""
         data: dict[str, Any] = handler(self)
         if self.region is None:
             data.pop("region", None)
         if self.battery == Battery():
             data.pop("battery", None)
+        if self.target == Target():
+            data.pop("target", None)
         return data
 
     @model_validator(mode="after")
@@ -376,6 +394,10 @@ class Mission(Checked):
             raise ValueError(f"timing.horizon / timing.checkpoint must be at most "
                              f"{MAX_RECORDS:,} records, got {t.horizon:g} s / {t.checkpoint:g} s "
                              f"= {records:,.0f}")
+        delay = self.target.delay
+        if delay > 0 and not _multiple_of(delay, t.dt):
+            raise ValueError(f"target.delay must be a multiple of timing.dt = {t.dt} s, got "
+                             f"{delay:g}")
         coh = self.channel.coherence
         if coh is not None and not _multiple_of(coh, t.dt):
             raise ValueError(f"channel.coherence must be a multiple of timing.dt = {t.dt} s, "
@@ -506,7 +528,8 @@ class Mission(Checked):
 def flat_groups() -> dict[str, type[BaseModel]]:
     """The groups whose fields are flat mission parameters (every group but ``region``)."""
     return {"area": Area, "team": Team, "sensing": Sensing, "channel": Channel,
-            "timing": Timing, "readings": Readings, "mtsp": MtspSettings, "battery": Battery}
+            "timing": Timing, "readings": Readings, "mtsp": MtspSettings, "battery": Battery,
+            "target": Target}
 
 
 def param_groups() -> dict[str, str]:

@@ -42,6 +42,8 @@ from sarlink.engine.hooks import (
 )
 from sarlink.engine.relays import none as no_relays
 from sarlink.engine.rules import none
+from sarlink.engine.target_motion import still
+from sarlink.engine.target_motion.model import TargetMotion
 
 ENGINE = Path(__file__).resolve().parent
 _BLOCK = re.compile(r"# ---- plug-ins: .*?# ---- end of plug-ins ----\n", re.DOTALL)
@@ -65,9 +67,12 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
 
 def plugin_block(rule: DistributedRule | None, radio: RadioModel,
                  relays: RelayStrategy | None = None, *, scans_ranges: bool = True,
-                 chain: bool = False, energy: bool = False) -> str:
+                 chain: bool = False, energy: bool = False,
+                 target: TargetMotion | None = None) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only), ``radio``
-    and ``relays`` (``None``: a team without relays, ``RELAYS = False``); ``chain``: the team
+    and ``relays`` (``None``: a team without relays, ``RELAYS = False``); ``target``: the
+    target's motion model (``None`` or one that does not move: a still target,
+    ``TARGET_MOVES = False``, else that code is not compiled); ``chain``: the team
     forms a chain to a found target (``on_detect = relay``, ``CHAIN``; else that code is not
     compiled); ``energy``: its drones fly on batteries (``ENERGY``,
     :mod:`sarlink.engine.endurance`; else that code is not compiled). The range scan
@@ -85,17 +90,23 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel,
     relay_hooks = relays.hooks() if relays else {}
     for name, default in (("place", no_relays.place), ("prepare", no_relays.prepare)):
         lines += _hook_lines("relay_" + name, relay_hooks.get(name) or default)
+    motion = target.hooks() if target else {}
+    for name, default in (("start", still.start), ("move", still.move)):
+        lines += _hook_lines("target_" + name, motion.get(name) or default)
     if isinstance(radio.static, bool):
         lines += ["", "", "@njit(inline='always')", "def radio_static(p, rp):",
                   f"    return {radio.static}", ""]
+    moves = target is not None and target.moves
     range_free = (radio.range_free and (rule is None or rule.range_free) and relays is None
-                  and not chain and not energy)
+                  and not chain and not energy and not moves)
     lines += [f"RELAYS = {relays is not None}",
               f"CHAIN = {chain}",
               f"ENERGY = {energy}",
               f"RULE_DUE = {rule is not None and rule.due is not None}",
               f"RULE_NEAR = {rule is not None and rule.near}",
               f"SCANS_RANGES = {scans_ranges and range_free}",
+              f"TARGET_MOVES = {moves}",
+              f"TARGET_STATE = {target.state if moves and target else 0}",
               "# ---- end of plug-ins ----", ""]
     return "\n".join(lines)
 
@@ -119,11 +130,12 @@ def stepping_source(text: str) -> str:
 
 def kernel_source(rule: DistributedRule | None, radio: RadioModel,
                   relays: RelayStrategy | None = None, *, cache: bool = True,
-                  stepping: bool = False, chain: bool = False, energy: bool = False) -> str:
-    """The text of the kernel module for ``rule``, ``radio``, ``relays``, ``chain`` and
-    ``energy`` (its stepping form if ``stepping``)."""
+                  stepping: bool = False, chain: bool = False, energy: bool = False,
+                  target: TargetMotion | None = None) -> str:
+    """The text of the kernel module for ``rule``, ``radio``, ``relays``, ``chain``,
+    ``energy`` and ``target`` (its stepping form if ``stepping``)."""
     block = plugin_block(rule, radio, relays, scans_ranges=not stepping,  # an env never scans
-                         chain=chain, energy=energy)
+                         chain=chain, energy=energy, target=target)
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)
@@ -131,13 +143,15 @@ def kernel_source(rule: DistributedRule | None, radio: RadioModel,
 
 
 def _sources(rule: DistributedRule | None, radio: RadioModel,
-             relays: RelayStrategy | None = None) -> list[Path]:
+             relays: RelayStrategy | None = None,
+             target: TargetMotion | None = None) -> list[Path]:
     """Every file the kernel's machine code depends on: the engine's, and those of the hooks'
     modules with the modules beside them in their package (ConCov's hooks call ConB's and
     CovB's, :mod:`sarlink.planners.rules`)."""
     files = set(ENGINE.rglob("*.py"))
     hooks = [*(rule.hooks().values() if rule else ()), *radio.hooks().values(),
-             *(relays.hooks().values() if relays else ())]
+             *(relays.hooks().values() if relays else ()),
+             *(target.hooks().values() if target else ())]
     for fn in hooks:
         if fn is not None:
             py = python_function(fn)
@@ -151,10 +165,12 @@ def _sources(rule: DistributedRule | None, radio: RadioModel,
 
 
 def kernel_digest(rule: DistributedRule | None, radio: RadioModel, text: str,
-                  relays: RelayStrategy | None = None) -> str:
+                  relays: RelayStrategy | None = None,
+                  target: TargetMotion | None = None) -> str:
     """SHA-256 (16 hex digits) of the generated text and every source it depends on."""
     digest = hashlib.sha256(text.encode())
-    for path in _sources(rule, radio, relays):  # by content and name: clones share compiled kernels
+    # by content and name: clones share compiled kernels
+    for path in _sources(rule, radio, relays, target):
         digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:16]
 
@@ -198,11 +214,12 @@ def _slug(name: str) -> str:
 
 def kernel_for(rule: DistributedRule | None, radio: RadioModel,
                relays: RelayStrategy | None = None, *, cache: bool = True,
-               stepping: bool = False, chain: bool = False, energy: bool = False
-               ) -> Callable[..., Any]:
+               stepping: bool = False, chain: bool = False, energy: bool = False,
+               target: TargetMotion | None = None) -> Callable[..., Any]:
     """``simulate_kernel`` compiled for ``rule``, ``radio`` and ``relays`` (``None``: a team
     without relays), with the chain to a found target if ``chain`` (``on_detect = relay``)
-    and with batteries if ``energy`` (lazily, on the first call).
+    with batteries if ``energy`` and with the target's motion if ``target`` moves (lazily, on
+    the first call).
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
     ``stepping=True`` gives the stepping form (:func:`stepping_source`): a generator of the
@@ -211,17 +228,20 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel,
     ``decide`` is not called.
     """
     # disc and shadowing share a kernel
-    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy)
+    if target is not None and not target.moves:
+        target = None  # a still target: the kernel without the seam
+    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy, target)
     if key not in _MEMO:
         if stepping and rule is not None:
             rule = dataclasses.replace(rule, decide=none.decide)
         text = kernel_source(rule, radio, relays, cache=cache, stepping=stepping, chain=chain,
-                             energy=energy)
-        digest = kernel_digest(rule, radio, text, relays)
+                             energy=energy, target=target)
+        digest = kernel_digest(rule, radio, text, relays, target)
         form = "_steps" if stepping else ""
         relayed = f"_relays_{_slug(relays.name)}" if relays else ""
         chained = "_chain" if chain else ""
         chained += "_energy" if energy else ""
+        chained += f"_target_{_slug(target.name)}" if target else ""
         name = (f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{relayed}{chained}"
                 f"{form}_{digest}")
         if cache:

@@ -49,6 +49,8 @@ from sarlink.engine.rules.none import due as rule_due
 from sarlink.engine.relays.none import place as relay_place
 from sarlink.engine.relays.none import prepare as relay_prepare
 from sarlink.engine.rules.none import prepare as rule_prepare
+from sarlink.engine.target_motion.still import move as target_move
+from sarlink.engine.target_motion.still import start as target_start
 
 RELAYS = False
 CHAIN = False
@@ -56,6 +58,8 @@ ENERGY = False
 RULE_DUE = False
 RULE_NEAR = False
 SCANS_RANGES = True
+TARGET_MOVES = False
+TARGET_STATE = 0
 # ---- end of plug-ins ----
 # isort: on
 
@@ -66,14 +70,18 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     cp_steps: np.ndarray, rng_turn: np.random.Generator,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator,
                     rng_rule: np.random.Generator, rng_heading: np.random.Generator,
-                    edges: np.ndarray, nav: np.ndarray, far: float, r2s: np.ndarray
-                    ) -> RunRecord:
+                    edges: np.ndarray, nav: np.ndarray, far: float, r2s: np.ndarray,
+                    tp: np.ndarray, rng_target: np.random.Generator) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
     ``edges`` are the segments of a polygon area's rings (:mod:`sarlink.engine.area`), ``nav``
     its corners (x, y, distance home, distances to the corners they see) and ``far`` the
     longest flight home; ``edges`` empty for the paper's square ``[0, p.size]²``.
+    ``(target_x, target_y)`` is where the target was last seen; a moving target
+    (``TARGET_MOVES``) moves from there by the target-motion model's hooks with parameters
+    ``tp`` and draws from ``rng_target`` (:mod:`sarlink.engine.target_motion`), first for
+    ``p.target_delay`` steps before take-off, then at the end of every step's move phase.
     ``cp_steps`` are the steps at which the cumulative records are taken. A run stopped early
     (``p.stop``) has NaN records after its last step and a trajectory that ends there. The
     kernel releases the GIL, so that threads (a threaded Dask worker) can simulate at once.
@@ -86,6 +94,12 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     py[:n] = pos0[:, 1]
     pz[:n] = p.altitude
     px[n], py[n], px[n + 1], py[n + 1] = p.bs_x, p.bs_y, target_x, target_y
+    if TARGET_MOVES:  # compiled only for a moving target (build): its walk before take-off
+        txy, tstate = np.array([target_x, target_y]), np.zeros(TARGET_STATE)
+        target_start(txy, tstate, tp, rng_target)
+        for j in range(p.target_delay):
+            target_move(txy, tstate, j * p.dt, p.dt, tp, edges, p.size, rng_target)
+        px[n + 1], py[n + 1] = txy[0], txy[1]
     hx, hy = np.empty(n), np.empty(n)
     for i in range(n):
         hx[i], hy[i] = math.cos(heading0[i]), math.sin(heading0[i])
@@ -131,6 +145,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     track = records.new_track(p.n_steps + 1 if p.record else 0, n, nw,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
+    traj_target = np.empty((p.n_steps + 1 if TARGET_MOVES and p.record else 0, 1, 2))
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
     depth, farthest = np.full(cp_steps.shape[0], np.nan), np.full(cp_steps.shape[0], np.nan)
     acc_reach = acc_conn = 0.0
@@ -138,7 +153,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     t_det = t_not = NEVER
     detector = -1
     routes = wp.shape[0] > 0
-    may_settle = radio_static(p, rp) and not p.record  # a recorded run keeps every step
+    # a recorded run keeps every step; a moving target may walk into a settled drone's range
+    may_settle = radio_static(p, rp) and not p.record and not TARGET_MOVES
     polygon = edges.shape[0] > 0
     home_max = far if polygon else motion.farthest_home(p)
     scanning = SCANS_RANGES and r2s.shape[0] > 0
@@ -181,6 +197,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if p.record:
             records.record_step(k, px, py, hx, hy, routed, knows, mode, adj, traj_pos, traj_head,
                                 traj_knows, traj_route, traj_mode, traj_links)
+            if TARGET_MOVES:
+                traj_target[k, 0, 0], traj_target[k, 0, 1] = px[n + 1], py[n + 1]
         elif p.trace:
             records.record_positions(k, px, py, mode, traj_pos, traj_mode)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
@@ -251,6 +269,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     rejoin, aim_x, aim_y)
         if ENERGY:
             endurance.drain(p, px, py, mode, bx, by, airborne, energy, used)
+        if TARGET_MOVES:  # the target moves last: the next step senses it where it went
+            target_move(txy, tstate, (p.target_delay + k) * p.dt, p.dt, tp, edges, p.size,
+                        rng_target)
+            px[n + 1], py[n + 1] = txy[0], txy[1]
 
     if ENERGY:  # noqa: SIM108 (a statement Numba prunes: without ENERGY, sorties is unbound)
         flown = records.Sorties(sorties, ground_s, used)
@@ -264,4 +286,4 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
                                    traj_route[:kk], traj_mode[:kk], traj_links[:kk]),
-                     at_ranges, depth, farthest, obs.work[0], flown)
+                     at_ranges, depth, farthest, obs.work[0], flown, traj_target[:kk])

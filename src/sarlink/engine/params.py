@@ -122,3 +122,5 @@ class Params(NamedTuple):
     """A battery swap at the BS, steps."""
     spares: int
     """Spare batteries at the BS (``-1``: unlimited)."""
+    target_delay: int
+    """Steps the target moves before take-off (``target.delay``; 0 for a still target)."""

@@ -92,6 +92,9 @@ class RunRecord(NamedTuple):
     """The work the rule counted in ``obs.work`` (ConB: the nodes its route predictions
     expanded); 0 for a rule that counts none."""
     sorties: Sorties
+    target_track: np.ndarray
+    """``(steps, 1, 2)``: the target's position at every recorded step, m; empty unless the
+    run was recorded and its target moves (:mod:`sarlink.engine.target_motion`)."""
 
 
 @njit(cache=True, error_model="numpy")

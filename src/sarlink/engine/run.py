@@ -46,6 +46,7 @@ from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.scenario import HEADING_ERROR, Scenario, draw_scenario, takeoff_headings
 from sarlink.engine.steering import Steering
 from sarlink.engine.streams import Streams, copied, run_streams
+from sarlink.engine.target_motion import TargetMotion, get_target_motion
 from sarlink.result import RunResult, Trajectory
 
 
@@ -68,6 +69,8 @@ class Prepared:
     """A polygon area's corners, their distances home and to each other."""
     far: float
     """A polygon area's longest flight home, m (an upper bound)."""
+    target_params: np.ndarray
+    """The target-motion model's parameter array (empty for a still target)."""
 
     @classmethod
     def build(cls, mission: Mission, steering: Steering) -> Prepared:
@@ -93,6 +96,7 @@ class Prepared:
             nav, far = Navigation(polygon).home((bs_x, bs_y))
         t, r = mission.timing, mission.readings
         cp_steps = np.array(mission.checkpoint_steps(), dtype=np.int64)
+        motion = get_target_motion(mission.target.motion)
         params = Params(
             size=mission.area.size, bs_x=bs_x, bs_y=bs_y, speed=mission.team.speed,
             alpha=mission.team.alpha,
@@ -123,11 +127,13 @@ class Prepared:
             relay_priority=int(PRIORITY_CODES[mission.team.relay_priority]),
             relay_estimate=int(ESTIMATE_CODES[mission.team.relay_estimate]),
             **battery_params(mission),
+            target_delay=round(mission.target.delay / t.dt) if motion.moves else 0,
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
                    distributed=distributed, waypoints=waypoints, wp_start=wp_start,
-                   cp_steps=cp_steps, edges=edges, nav=nav, far=far)
+                   cp_steps=cp_steps, edges=edges, nav=nav, far=far,
+                   target_params=motion.array(mission) if motion.moves else np.empty(0))
 
     @property
     def relays(self) -> RelayStrategy | None:
@@ -136,12 +142,18 @@ class Prepared:
         return get_relay_strategy(team.relay_strategy) if team.relays else None
 
     @property
+    def target_motion(self) -> TargetMotion:
+        """How the mission's target moves (``target.motion``)."""
+        return get_target_motion(self.mission.target.motion)
+
+    @property
     def kernel(self) -> Any:
         """The kernel compiled for this team's rule, the mission's radio model, the team's
-        relay strategy (if it has relays) and its chain to a found target (if
-        ``on_detect = relay``)."""
+        relay strategy (if it has relays), its chain to a found target (if
+        ``on_detect = relay``), its batteries and the target's motion (if it moves)."""
         return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays,
-                          chain=self.params.on_detect == RELAY, energy=self.energy)
+                          chain=self.params.on_detect == RELAY, energy=self.energy,
+                          target=self.target_motion)
 
     @property
     def energy(self) -> bool:
@@ -171,7 +183,10 @@ class Prepared:
                                  streams.takeoff), self.waypoints, self.wp_start,
                 self.cp_steps, streams.turn, streams.shadow, streams.look, streams.rule,
                 streams.heading,
-                self.edges, self.nav, self.far, np.array([rc * rc for rc in scan_at]))
+                self.edges, self.nav, self.far, np.array([rc * rc for rc in scan_at]),
+                # a still target's kernel draws nothing from its stream: none is made
+                self.target_params,
+                streams.target if self.target_motion.moves else streams.turn)
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                traced_at: float | None = None, scan_at: Sequence[float] = ()) -> RunRecord:
@@ -183,7 +198,7 @@ class Prepared:
         """
         kernel = self.kernel
         if scan_at and not self.distributed.any():
-            kernel = kernel_for(None, get_radio(self.mission.radio))
+            kernel = kernel_for(None, get_radio(self.mission.radio))  # range-free: still
         args = self.arguments(streams, scenario, trajectory=trajectory, traced_at=traced_at,
                               scan_at=scan_at)
         if kernel.signatures:  # compiled: no checks in the way of a sweep's runs
@@ -222,7 +237,8 @@ class Prepared:
             tr = rec.track
             traj = Trajectory(t=np.arange(tr.mode.shape[0]) * self.params.dt,
                               positions=tr.positions, headings=tr.headings, knows=tr.knows,
-                              bs_route=tr.bs_route, mode=tr.mode, links=unpack_links(tr.links))
+                              bs_route=tr.bs_route, mode=tr.mode, links=unpack_links(tr.links),
+                              target=rec.target_track if rec.target_track.shape[0] else None)
         return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
                           traj, batteries=self.energy)
 
@@ -240,12 +256,14 @@ class Prepared:
         """Whether the team flies the same at every communication range, as the seams declare
         it: the radio model's fades do not depend on ``r_c`` (the built-in log-normal model),
         no drone reports or forms a chain to a found target (``on_detect = continue``: the
-        chain's points depend on ``r_c``), and every distributed drone (if any) runs a rule
+        chain's points depend on ``r_c``), the target stands still (the scan reads one
+        target position), and every distributed drone (if any) runs a rule
         declared ``range_free`` (CovB). Such a run can be flown once for all ranges
         (:meth:`run_ranges`)."""
         rule = self.steering.rule
         return (get_radio(self.mission.radio).range_free and self.params.on_detect == CONTINUE
                 and self.params.relays == 0 and not self.energy
+                and not self.target_motion.moves
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
     def _own(self, seed: int, run: int) -> Prepared:

@@ -73,6 +73,12 @@ class Streams:
         """The errors of commanded changes of heading (``readings.turns = jitter``)."""
         return self._stream(7)
 
+    @property
+    def target(self) -> np.random.Generator:
+        """A moving target's draws (a target-motion model's hooks,
+        :mod:`sarlink.engine.target_motion`)."""
+        return self._stream(8)
+
 
 def run_streams(seed: int, run: int) -> Streams:
     """The independent generators of run ``run`` of an experiment seeded with ``seed``."""
