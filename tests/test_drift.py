@@ -9,12 +9,17 @@ jibe rate, and the forcing tables' interpolation. The hooks are called directly 
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
+from typer.testing import CliRunner
 
+from sarlink import Mission, load, simulate
+from sarlink.cli import app
 from sarlink.config import ConfigError
 from sarlink.config.leeway import LEEWAY_CLASSES, forcing_table, leeway_class
+from sarlink.engine.streams import run_streams
 from sarlink.engine.target_motion.drift import (
     STATE,
     drift_params,
@@ -22,6 +27,7 @@ from sarlink.engine.target_motion.drift import (
     forcing_at,
     start,
 )
+from sarlink.testing import check_target_motion
 
 # OBJECTPROP.DAT rows: downwind, crosswind right, crosswind left (slope %, offset cm/s, std cm/s)
 PUBLISHED = {
@@ -180,3 +186,69 @@ def test_an_unknown_object_class_names_the_known_ones() -> None:
     with pytest.raises(ConfigError, match=r"unknown Leeway object class 'PIW-9'; "
                                           r"known: PIW-1, PIW-2"):
         leeway_class("PIW-9")
+
+
+# -- in the kernel, in storage, on the command line (one kernel: covb with a drifting target) --
+
+DRIFTING = {"planner": "covb", "drones": 3, "horizon": 300.0, "motion": "drift",
+            "drift_object": "PIW-2", "drift_wind": (8.0, 6.0),
+            "drift_current": "0,0.2,-0.1; 200,0,0.3"}
+
+
+def test_a_drifting_target_in_the_kernel_moves_as_the_hooks_say() -> None:
+    """The kernel starts the target where it was drawn, moves it through the delay, then once
+    per step; its track is the hooks' own steps from the run's target stream."""
+    mission = Mission.build(delay=120.0, **DRIFTING)
+    result = simulate(mission, seed=3, run=1, trajectory=True)
+    assert result.trajectory is not None and result.trajectory.target is not None
+    track = result.trajectory.target[:, 0, :]
+    tp = drift_params("PIW-2", (8.0, 6.0), "0,0.2,-0.1; 200,0,0.3")
+    rng, dt = run_streams(3, 1).target, mission.timing.dt
+    xy, state = np.array(result.target), np.zeros(STATE)
+    start(xy, state, tp, rng)
+    drift_targets(xy[None, :], state[None, :], 0.0, dt, 120, tp, rng)
+    steps = track.shape[0] - 1
+    want = [xy.copy()]
+    for k in range(steps):
+        drift_targets(xy[None, :], state[None, :], 120.0 + k * dt, dt, 1, tp, rng)
+        want.append(xy.copy())
+    np.testing.assert_allclose(track, np.array(want), rtol=0, atol=1e-9)
+    assert np.hypot(*(track[-1] - track[0])) > 10.0  # it went somewhere
+
+
+def test_a_sweep_over_drift_settings_stores_and_loads_them(tmp_path: Path) -> None:
+    """Pairs, tables and text of wind and current are one Parquet type: lists of rows."""
+    (tmp_path / "e.toml").write_text(
+        "seed = 1\nruns = 2\n[mission.team]\nplanner = 'covb'\ndrones = 3\n"
+        "[mission.timing]\nhorizon = 60\n[mission.target]\nmotion = 'drift'\n"
+        "drift_object = 'PIW-2'\ndrift_current = '0.2,-0.1'\n"
+        "[grid]\ndrift_wind = [[8, 6], [[0, 8, 6], [600, 0, 10]]]\n")
+    out = CliRunner().invoke(app, ["sweep", str(tmp_path / "e.toml"), "--out",
+                                   str(tmp_path / "o"), "--workers", "1"])
+    assert out.exit_code == 0, out.output
+    rows = load(tmp_path / "o")
+    assert len(rows) == 4 and set(rows["drift_object"]) == {"PIW-2"}
+    winds = [tuple(tuple(r) for r in w) for w in rows.groupby("point")["drift_wind"].first()]
+    assert winds == [((0.0, 8.0, 6.0),), ((0.0, 8.0, 6.0), (600.0, 0.0, 10.0))]
+    assert all(tuple(tuple(r) for r in c) == ((0.0, 0.2, -0.1),) for c in rows["drift_current"])
+
+
+def test_design_takes_the_drift_flags(tmp_path: Path) -> None:
+    config = tmp_path / "drift.toml"
+    config.write_text("[target]\nmotion = 'drift'\n")
+    out = CliRunner().invoke(app, [
+        "design", "--config", str(config), "--drift-object", "PIW-3", "--wind", "8,6",
+        "--current", "0,0,0.1; 300,0.2,0", "--size", "2000", "--rc", "500", "--td", "300",
+        "--ps", "0.5", "--planner", "covb", "--max-drones", "3", "--min-drones", "3",
+        "--option", "on_detect=continue", "--first-runs", "10", "--candidate-runs", "10",
+        "--workers", "1", "--out", str(tmp_path / "runs"), "--json"])
+    assert out.exit_code == 0, out.output
+    (folder,) = (tmp_path / "runs").glob("seed-*/*")  # the design's one candidate mission
+    rows = load(folder)
+    assert set(rows["drift_object"]) == {"PIW-3"} and set(rows["motion"]) == {"drift"}
+    assert [tuple(r) for r in rows["drift_current"].iloc[0]] == [(0.0, 0.0, 0.1),
+                                                                 (300.0, 0.2, 0.0)]
+
+
+def test_drift_keeps_the_target_motion_contract() -> None:
+    check_target_motion("drift", drift_wind="0,8,6; 600,-3,9", drift_current=(0.2, -0.1))

@@ -26,23 +26,13 @@ from pathlib import Path
 from typing import Annotated, Any, Literal, get_args, get_origin
 
 import typer
-from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
 from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
-from sarlink.config.mission import (
-    ENERGY_MODEL_WITH_BATTERY,
-    Area,
-    Battery,
-    Channel,
-    MtspSettings,
-    Readings,
-    Sensing,
-    Team,
-    Timing,
-)
+from sarlink.config.leeway import LEEWAY_CLASSES
+from sarlink.config.mission import ENERGY_MODEL_WITH_BATTERY, flat_groups
 from sarlink.engine import relay_strategy_names
 from sarlink.engine.energy import energy_model_names
 from sarlink.planners import planner_names
@@ -94,10 +84,7 @@ class Flag:
 
 
 def _field(param: str) -> FieldInfo:
-    models: dict[str, type[BaseModel]] = {
-        "area": Area, "team": Team, "sensing": Sensing, "channel": Channel, "timing": Timing,
-        "readings": Readings, "mtsp": MtspSettings, "battery": Battery}
-    return models[param_groups()[param]].model_fields[param]
+    return flat_groups()[param_groups()[param]].model_fields[param]
 
 
 def allowed(field: FieldInfo) -> str:
@@ -177,6 +164,13 @@ FLAGS: tuple[Flag, ...] = _rows(
      {*ONE_RUN, "design"}),
     ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
      "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
+    ("--drift-object", str, "with a drifting target: its Leeway object class, "
+     f"{', '.join(LEEWAY_CLASSES)}", "drift_object", {*ONE_RUN, "design"}),
+    ("--wind", str, "with a drifting target: the 10 m wind, m/s, 'east,north', or rows "
+     "'t,east,north; ...' over the seconds since it was last seen", "drift_wind",
+     {*ONE_RUN, "design"}),
+    ("--current", str, "with a drifting target: the surface current, m/s, as --wind",
+     "drift_current", {*ONE_RUN, "design"}),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN | {"design"}, apply=_read),

@@ -41,7 +41,8 @@ ADDED_LATER: dict[str, dict[str, Any]] = {
     "readings": EARLIER_CHOICES,
     "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0,
                 "spares": None},
-    "target": {"motion": "still", "delay": 0.0},
+    "target": {"motion": "still", "delay": 0.0, "drift_object": "PIW-1",
+               "drift_wind": [[0.0, 0.0, 0.0]], "drift_current": [[0.0, 0.0, 0.0]]},
 }
 """Parameters added after results were first stored, with the value that keeps the earlier
 behaviour: left out of the hash at that value, so earlier results folders stay valid (a group

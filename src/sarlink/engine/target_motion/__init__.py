@@ -4,6 +4,7 @@ the registry that finds them by name (:mod:`.registry`). docs/model.md, Target m
 
 from __future__ import annotations
 
+from sarlink.engine.target_motion import drift
 from sarlink.engine.target_motion.model import TargetMotion
 from sarlink.engine.target_motion.registry import (
     TARGET_MOTIONS,
@@ -16,5 +17,11 @@ STILL = register_target_motion(TargetMotion(
     "still", source="the paper: the target stays where it was drawn"))
 """The paper's target: no motion, and the kernel compiled without the seam."""
 
-__all__ = ["STILL", "TARGET_MOTIONS", "TargetMotion", "get_target_motion",
+DRIFT = register_target_motion(TargetMotion(
+    "drift", move=drift.move, start=drift.start, state=drift.STATE, params=drift.mission_params,
+    source="Leeway (Allen and Plourde 1999; Allen 2005) with OpenDrift's OBJECTPROP.DAT "
+    "coefficients, plus the current"))
+"""A person or an object at sea: leeway and current (:mod:`.drift`)."""
+
+__all__ = ["DRIFT", "STILL", "TARGET_MOTIONS", "TargetMotion", "get_target_motion",
            "register_target_motion", "target_motion_names"]

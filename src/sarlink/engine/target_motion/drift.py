@@ -62,10 +62,10 @@ def drift_params(object_class: str, wind: Forcing, current: Forcing,
     return np.array(head + [v for row in (*w, *c) for v in row], dtype=float)
 
 
-def mission_params(mission: Mission) -> np.ndarray:
-    """The hooks' parameter array of ``mission``'s target (``[target]`` drift fields)."""
-    target = mission.target  # type: ignore[attr-defined]
-    return drift_params(target.drift_object, target.drift_wind, target.drift_current)
+def mission_params(mission: Mission) -> list[float]:
+    """The hooks' parameters for ``mission``'s target (``[target]`` drift fields)."""
+    target = mission.target
+    return drift_params(target.drift_object, target.drift_wind, target.drift_current).tolist()
 
 
 @njit(cache=True, inline="always", error_model="numpy")
