@@ -26,6 +26,11 @@ energy of each step (flying or holding), the turn home when the energy above the
 for the flight home and no more, the swap from the BS's spares, and the take-off in the role
 left (a route drone back to where it left its route). The powers are the energy model's own
 (``EnergyModel.power``), checked against its equations in tests/test_energy.py.
+
+A walking target (``target.motion = walk``, docs/model.md, Target motion) walks here from the
+model's text: the heading's normal turn each step, the log-normal time it stops, the uniform
+headings drawn again until a step stays in the square, and its walk during ``target.delay``
+before take-off; it moves after the drones, so each step senses it where it is then.
 """
 
 from __future__ import annotations
@@ -61,6 +66,8 @@ class NaiveResult:
     energy it drew (J)."""
     ground_time: list[float] | None = None
     energy: list[float] | None = None
+    target_track: list[tuple[float, float]] | None = None
+    """A walking target's position at every recorded step."""
 
 
 def _dist(p: tuple[float, float], q: tuple[float, float]) -> float:
@@ -76,6 +83,31 @@ def _within(p: tuple[float, float], q: tuple[float, float], limit: float, h: flo
 
 def _inside(p: tuple[float, float], a: float) -> bool:
     return 0 <= p[0] <= a and 0 <= p[1] <= a
+
+
+class Walker:
+    """A lost person walking in the square ``[0, a]²`` (docs/model.md, Target motion), drawing
+    from the run's target stream: a first heading and a stop time, then per step a turn."""
+
+    def __init__(self, mission: Mission, rng: np.random.Generator) -> None:
+        t = mission.target
+        self.speed, self.turn, self.a, self.rng = t.walk_speed, t.walk_turn, mission.area.size, rng
+        self.heading = rng.random() * 2 * math.pi
+        self.stop = t.walk_mobile * math.exp(t.walk_spread * rng.standard_normal())
+
+    def walk(self, at: tuple[float, float], t: float, dt: float) -> tuple[float, float]:
+        """Where the person walks from ``at`` between ``t`` and ``t + dt``."""
+        if t >= self.stop:
+            return at
+        step = self.speed * min(dt, self.stop - t)
+        self.heading += self.turn * math.sqrt(dt / 60) * self.rng.standard_normal()
+        for _ in range(256):
+            to = (at[0] + step * math.cos(self.heading), at[1] + step * math.sin(self.heading))
+            if _inside(to, self.a):
+                return to
+            self.heading = self.rng.random() * 2 * math.pi
+        to = (at[0] + step * math.cos(self.heading), at[1] + step * math.sin(self.heading))
+        return to if _inside(to, self.a) else at
 
 
 def component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[int]:
@@ -138,6 +170,12 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
     BS, TG = n, n + 1
+    walker = Walker(mission, streams.target) if mission.target.motion == "walk" else None
+    delay = round(mission.target.delay / dt) if walker else 0
+    for j in range(delay):
+        assert walker is not None
+        target = walker.walk(target, j * dt, dt)
+    track = []
 
     pos = [bs] * n
     free = [i for i in range(searchers) if not route[i]]  # the drones the rule steers
@@ -531,6 +569,7 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             t_not = t
         if record:
             positions.append(list(pos))
+            track.append(target)
         if k in checkpoints:
             matrix = [[j in links[i] for j in range(n + 2)] for i in range(n + 2)]
             base = [readings.parked == "base" and mo == "landed" for mo in mode]
@@ -659,10 +698,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                     drawn += descent if mode[i] == "landed" else 0.0
                     energy[i] -= drawn
                     used[i] += drawn
+        if walker is not None:  # the target moves last
+            target = walker.walk(target, (delay + k) * dt, dt)
 
     immediate = t_not is not None and t_not == t_det
     return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
-                       farthest, *((sorties, ground_time, used) if battery else ()))
+                       farthest, *((sorties, ground_time, used) if battery else (None,) * 3),
+                       target_track=track if walker else None)
 
 
 @dataclass

@@ -9,7 +9,14 @@ from __future__ import annotations
 import numpy as np
 
 from sarlink.config import Mission
-from sarlink.engine import Prepared, Scenario, Steering, get_radio, get_relay_strategy
+from sarlink.engine import (
+    Prepared,
+    Scenario,
+    Steering,
+    get_radio,
+    get_relay_strategy,
+    get_target_motion,
+)
 from sarlink.engine.energy import get_energy_model
 from sarlink.planners import get_planner
 from sarlink.registry import Plugins, adopt_plugins, plugins_in_code
@@ -21,12 +28,13 @@ __all__ = ["Plugins", "adopt_plugins", "check_mission", "plugins_in_code", "prep
 
 def check_mission(mission: Mission) -> None:
     """Raise a :class:`~sarlink.ConfigError` unless the mission's planner, radio model, relay
-    strategy and energy model are known: what cannot be checked before plug-ins are loaded,
-    checked where work starts."""
+    strategy, energy model and target-motion model are known: what cannot be checked before
+    plug-ins are loaded, checked where work starts."""
     get_planner(mission.team.planner)
     get_radio(mission.radio)
     get_relay_strategy(mission.team.relay_strategy)
     get_energy_model(mission.energy_model)
+    get_target_motion(mission.target.motion)
 
 
 def warm_up(planner: str, radio: str, *, ranges: bool = False,

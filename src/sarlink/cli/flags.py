@@ -33,7 +33,7 @@ from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
 from sarlink.config.leeway import LEEWAY_CLASSES
 from sarlink.config.mission import ENERGY_MODEL_WITH_BATTERY, flat_groups
-from sarlink.engine import relay_strategy_names
+from sarlink.engine import relay_strategy_names, target_motion_names
 from sarlink.engine.energy import energy_model_names
 from sarlink.planners import planner_names
 from sarlink.simulation import check_mission
@@ -164,6 +164,15 @@ FLAGS: tuple[Flag, ...] = _rows(
      {*ONE_RUN, "design"}),
     ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
      "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
+    ("--target-motion", str, "how the target moves: "
+     f"{', '.join(target_motion_names())} (docs/model.md, Target motion)", "motion", ONE_RUN),
+    ("--delay", float, "seconds from the last sighting to take-off, in which the target "
+     "moves (a multiple of --dt)", "delay", ONE_RUN),
+    ("--walk-speed", float, "walk: the lost person's speed, m/s", "walk_speed", ONE_RUN),
+    ("--walk-turn", float, "walk: the spread of the heading's change over a minute, rad",
+     "walk_turn", ONE_RUN),
+    ("--walk-mobile", float, "walk: the median time the person keeps moving, s",
+     "walk_mobile", ONE_RUN),
     ("--drift-object", str, "with a drifting target: its Leeway object class, "
      f"{', '.join(LEEWAY_CLASSES)}", "drift_object", {*ONE_RUN, "design"}),
     ("--wind", str, "with a drifting target: the 10 m wind, m/s, 'east,north', or rows "

@@ -67,8 +67,9 @@ def simulate(
         plot_file(plot)
         output_file(html, "--html")
         mission = flags.mission()
+        moves = mission.target.motion != "still"  # its track says where it went
         result = run_simulation(mission, seed=seed, run=run,
-                                trajectory=plot is not None or html is not None)
+                                trajectory=plot is not None or html is not None or moves)
         if plot is not None:
             _save_plot(result, mission, plot)
         if html is not None:
@@ -93,6 +94,16 @@ def simulate(
         "depth_max": _finite_or_none(float(np.nanmax(result.depth, initial=-np.inf))),
         "farthest_max": _finite_or_none(float(np.nanmax(result.farthest, initial=-np.inf))),
     }
+    traj = result.trajectory
+    walked = None if traj is None or traj.target is None else traj.target[:, 0, :]
+    if traj is not None and walked is not None:  # a moving target: where it was when found
+        out["target_motion"] = mission.target.motion
+        out["target_delay"] = mission.target.delay
+        found = None if result.t_detect is None else \
+            walked[int(np.searchsorted(traj.t, result.t_detect))]
+        out["target_at_detection"] = None if found is None else [round(float(v), 1)
+                                                                 for v in found]
+        out["target_at_end"] = [round(float(v), 1) for v in walked[-1]]
     if result.sorties is not None and result.ground_time is not None and \
             result.energy is not None:  # a team on batteries
         out["sorties"] = result.sorties.tolist()
@@ -116,7 +127,14 @@ def simulate(
     where = f"({result.target[0]:.0f}, {result.target[1]:.0f}) m"
     if "target_lonlat" in out:
         where += " = {:.5f}, {:.5f}".format(*out["target_lonlat"])
-    table.add_row("target at", where)
+    table.add_row("target last seen at" if walked is not None else "target at", where)
+    if walked is not None:
+        table.add_row("target moves", f"{mission.target.motion}, from "
+                      f"{mission.target.delay:g} s before take-off")
+        if out["target_at_detection"] is not None:
+            table.add_row("target when detected", "({:.0f}, {:.0f}) m".format(
+                *out["target_at_detection"]))
+        table.add_row("target at the end", "({:.0f}, {:.0f}) m".format(*out["target_at_end"]))
     table.add_row("detected at", never if result.t_detect is None else
                   f"{result.t_detect:g} s by drone {result.detector}")
     table.add_row("BS notified at", never if result.t_notify is None else f"{result.t_notify:g} s")

@@ -295,6 +295,16 @@ class Target(Checked):
     delay: float = Field(
         0.0, ge=0, description="seconds between the last sighting and take-off, during which "
         "the target moves (a multiple of timing.dt)")
+    walk_speed: float = Field(
+        0.5, gt=0, description="walk: the person's speed, m/s (a slow pace off trail)")
+    walk_turn: float = Field(
+        0.5, ge=0, description="walk: the standard deviation of the heading's change over "
+        "one minute, rad (the heading is a random walk)")
+    walk_mobile: float = Field(
+        14400.0, gt=0, description="walk: the median time the person keeps moving after the "
+        "last sighting, s (log-normal; then the person stops)")
+    walk_spread: float = Field(
+        1.0, ge=0, description="walk: the standard deviation of the log of the time mobile")
     drift_object: str = Field(
         "PIW-1", min_length=1,
         description="with motion = drift: the Leeway object class, by OpenDrift's key "

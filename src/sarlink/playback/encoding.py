@@ -10,7 +10,8 @@ base64), because every quantity is stored at the width it needs:
 - modes: ``uint8`` per drone and step (:class:`sarlink.engine.codes.Mode` values);
 - knows, route to the BS: one bit per drone and step;
 - links: one bit per node pair ``i < j`` (upper triangle of the ``(N + 2)²`` matrix, drones,
-  BS, target) and step.
+  BS, target) and step;
+- a moving target's position: ``float32`` per coordinate and step (absent for a still one).
 
 Runs longer than the byte budget keep every ``stride``-th step (and the last); the page then
 shows each kept step until the next. Nothing is compressed, so the page decodes synchronously
@@ -60,6 +61,8 @@ class EncodedTrajectory:
     """bits (frames, drones)"""
     links: str
     """bits (frames, pairs) over :func:`link_pairs` (drones + 2)"""
+    target: str = ""
+    """float32 (frames, 2): a moving target's position; empty for a still target"""
 
     def json(self) -> dict[str, object]:
         """The fields by name, as the page's data block holds them."""
@@ -127,6 +130,7 @@ def encode(traj: Trajectory, budget: float = math.inf) -> EncodedTrajectory:
         knows=_bits(traj.knows[keep]),
         route=_bits(traj.bs_route[keep]),
         links=_bits(traj.links[keep][:, i, j]),
+        target="" if traj.target is None else _b64(traj.target[keep, 0].astype("<f4")),
     )
 
 
@@ -157,4 +161,6 @@ def decode(enc: EncodedTrajectory) -> Trajectory:
         bs_route=_unbits(enc.route, (f, n)),
         mode=_unb64(enc.mode, "u1").reshape(f, n),
         links=links,
+        target=None if not enc.target else
+        _unb64(enc.target, "<f4").astype(float).reshape(f, 1, 2),
     )

@@ -48,9 +48,11 @@
     const nodes = f.drones + 2;
     const pairs = [];
     for (let i = 0; i < nodes; i++) for (let j = i + 1; j < nodes; j++) pairs.push([i, j]);
+    /* a moving target's position per frame (float32 pairs), or null for a still one */
+    const target = f.target ? new Float32Array(bytes(f.target).buffer) : null;
     return { frames: f.frames, drones: f.drones, t: t, positions: positions, pairs: pairs,
              headings: bytes(f.headings), mode: bytes(f.mode), knows: bytes(f.knows),
-             route: bytes(f.route), links: bytes(f.links) };
+             route: bytes(f.route), links: bytes(f.links), target: target };
   }
 
   /* -- one panel: a run drawn on a canvas --------------------------------------------------- */
@@ -190,10 +192,12 @@
       ctx.rect(view.margin, view.margin, s.size * view.scale, s.size * view.scale);
       ctx.clip();
     }
-    ctx.fillStyle = "rgba(214, 39, 40, 0.07)";
-    ctx.beginPath();
-    ctx.arc(target[0], target[1], s.r * view.scale, 0, 2 * Math.PI);
-    ctx.fill();
+    if (!this.run.target) {  /* a moving target's sensing disc moves with it (draw) */
+      ctx.fillStyle = "rgba(214, 39, 40, 0.07)";
+      ctx.beginPath();
+      ctx.arc(target[0], target[1], s.r * view.scale, 0, 2 * Math.PI);
+      ctx.fill();
+    }
     ctx.restore();
     return layer;
   };
@@ -240,6 +244,7 @@
         const p = 2 * (k * n + i);
         return self.toScreen(view, run.positions[p], run.positions[p + 1]);
       }
+      if (i > n && run.target) return self.toScreen(view, run.target[2 * k], run.target[2 * k + 1]);
       return self.toScreen(view, i === n ? s.bs[0] : s.target[0], i === n ? s.bs[1] : s.target[1]);
     };
     const inComponent = function (i) { return i === n || bit(run.route, k * n + i) === 1; };
@@ -313,6 +318,22 @@
       ctx.stroke();
     }
     const target = node(n + 1);
+    if (run.target) {  /* a moving target: its track so far and its sensing disc */
+      ctx.strokeStyle = COLOUR.target;
+      ctx.lineWidth = 1.2;
+      ctx.setLineDash([4, 3]);
+      ctx.beginPath();
+      for (let j = 0; j <= k; j++) {
+        const q = self.toScreen(view, run.target[2 * j], run.target[2 * j + 1]);
+        if (j === 0) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]);
+      }
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.fillStyle = "rgba(214, 39, 40, 0.07)";
+      ctx.beginPath();
+      ctx.arc(target[0], target[1], s.r * view.scale, 0, 2 * Math.PI);
+      ctx.fill();
+    }
     const detected = s.tDetect !== null && run.t[k] >= s.tDetect;
     ctx.strokeStyle = COLOUR.target;
     ctx.lineWidth = detected ? 3.5 : 1.5;

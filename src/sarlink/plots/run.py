@@ -25,6 +25,10 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         _, ax = plt.subplots(figsize=(7, 7), layout="constrained")
     bx, by = mission.area.bs_xy
     tx, ty = result.target
+    walked = traj.target[:, 0, :] if traj.target is not None else None
+    if walked is not None:  # a moving target: drawn where it was at detection, or at the end
+        k = -1 if result.t_detect is None else int(np.searchsorted(traj.t, result.t_detect))
+        tx, ty = walked[k]
     draw_area(ax, mission)
     ax.add_patch(Circle((bx, by), mission.channel.rc, fill=False, ls="--", lw=0.8, color="tab:blue",
                         label=f"BS range r_c = {mission.channel.rc:g} m"))
@@ -45,6 +49,11 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         ax.plot(chain[:, 0], chain[:, 1], marker="o", ms=7, mfc="tab:red", mec="black",
                 ls="none")
     ax.plot(bx, by, marker="^", ms=12, color="tab:blue", ls="none", label="base station")
+    if walked is not None:
+        ax.plot(walked[:, 0], walked[:, 1], color="tab:red", lw=1.2, ls=(0, (2, 1)),
+                label=f"the target's track ({mission.target.motion})")
+        ax.plot(*result.target, marker="x", ms=9, color="tab:red", ls="none",
+                label="target last seen")
     ax.plot(tx, ty, marker="X", ms=11, color="tab:red", ls="none", label="target")
     if result.t_detect is not None and result.detector is not None:
         k = int(np.searchsorted(traj.t, result.t_detect))
