@@ -6,7 +6,9 @@ The leeway of an object (Allen and Plourde 1999; Allen 2005) is linear in the 10
 side ``s`` of downwind, right (``CWR``) or left (``CWL``), with the coefficients of its class
 (:data:`sarlink.config.leeway.LEEWAY_CLASSES`, from OpenDrift's OBJECTPROP.DAT). The target
 moves by ``L_d`` along the wind, ``L_c`` at right angles to it (positive to the right of
-downwind, as the right-side fits have positive slopes), and by the current.
+downwind, as the right-side fits have positive slopes; OpenDrift's ``Leeway.update`` turns a
+positive crosswind to the left, the same for classes whose sides mirror each other), and by
+the current.
 
 Each target draws its own fit once, at ``start``, as OpenDrift's ``Leeway.seed_elements`` does
 (opendrift/models/leeway.py): two standard normal numbers ``r_d`` and ``r_c``; the error
