@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from naive import simulate_naive
 from sarlink import Mission, load, simulate
 from sarlink.cli import app
 from sarlink.config import ConfigError
 from sarlink.config.leeway import LEEWAY_CLASSES, forcing_table, leeway_class
-from sarlink.engine.streams import run_streams
 from sarlink.engine.target_motion.drift import (
     STATE,
     drift_params,
@@ -195,25 +195,21 @@ DRIFTING = {"planner": "covb", "drones": 3, "horizon": 300.0, "motion": "drift",
             "drift_current": "0,0.2,-0.1; 200,0,0.3"}
 
 
-def test_a_drifting_target_in_the_kernel_moves_as_the_hooks_say() -> None:
-    """The kernel starts the target where it was drawn, moves it through the delay, then once
-    per step; its track is the hooks' own steps from the run's target stream."""
-    mission = Mission.build(delay=120.0, **DRIFTING)
-    result = simulate(mission, seed=3, run=1, trajectory=True)
-    assert result.trajectory is not None and result.trajectory.target is not None
-    track = result.trajectory.target[:, 0, :]
-    tp = drift_params("PIW-2", (8.0, 6.0), "0,0.2,-0.1; 200,0,0.3")
-    rng, dt = run_streams(3, 1).target, mission.timing.dt
-    xy, state = np.array(result.target), np.zeros(STATE)
-    start(xy, state, tp, rng)
-    drift_targets(xy[None, :], state[None, :], 0.0, dt, 120, tp, rng)
-    steps = track.shape[0] - 1
-    want = [xy.copy()]
-    for k in range(steps):
-        drift_targets(xy[None, :], state[None, :], 120.0 + k * dt, dt, 1, tp, rng)
-        want.append(xy.copy())
-    np.testing.assert_allclose(track, np.array(want), rtol=0, atol=1e-9)
-    assert np.hypot(*(track[-1] - track[0])) > 10.0  # it went somewhere
+def test_the_kernel_drifts_the_target_as_the_reference_does() -> None:
+    """The kernel starts the target where it was drawn, drifts it through the delay, then once
+    per step: its track, step by step, and the runs' events against the reference's drift
+    written from the model's text (tests/naive.py)."""
+    mission = Mission.build(delay=120.0, **DRIFTING)  # type: ignore[arg-type]
+    same = 0
+    for run in range(4):
+        fast = simulate(mission, seed=3, run=run, trajectory=True)
+        slow = simulate_naive(mission, 3, run, record=True)
+        assert fast.trajectory is not None and fast.trajectory.target is not None
+        track = fast.trajectory.target[:, 0, :]
+        np.testing.assert_allclose(track, np.array(slow.target_track), rtol=0.0, atol=1e-6)
+        assert np.hypot(*(track[-1] - track[0])) > 10.0  # it went somewhere
+        same += (fast.t_detect, fast.t_notify) == (slow.t_detect, slow.t_notify)
+    assert same >= 3
 
 
 def test_a_sweep_over_drift_settings_stores_and_loads_them(tmp_path: Path) -> None:
