@@ -171,6 +171,7 @@ def _east(xy: np.ndarray, state: np.ndarray, t: float, dt: float, tp: np.ndarray
     xy[0] += 50.0 * dt
 
 
+@pytest.mark.usefixtures("fresh_registries")
 def test_the_contract_catches_a_model_on_land_that_walks_off_it() -> None:
     model = TargetMotion("east-off", _east, _start, on_land=True)
     register_target_motion(model, replace=True)
@@ -200,3 +201,26 @@ def test_simulate_json_says_where_a_walking_target_went() -> None:
     assert (got["target_motion"], got["target_delay"]) == ("walk", 120.0)
     assert all(0.0 <= v <= 4000.0 for v in got["target_at_end"])
     assert got["target_at_end"] != got["target"]  # 2.5 m/s for 720 s unless it stopped at once
+
+
+def test_replays_and_plots_carry_the_targets_track(walked: list, tmp_path) -> None:
+    """The replay page's frames hold the track (float32) and decode to it; ``--plot``'s
+    figure draws it."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from sarlink.playback import replay
+    from sarlink.playback.encoding import decode, encode
+    from sarlink.plots.run import plot_run
+
+    result = walked[0][0]
+    traj = result.trajectory
+    back = decode(encode(traj)).target
+    assert back is not None and back.shape == traj.target.shape
+    np.testing.assert_allclose(back, traj.target, rtol=1e-6, atol=1e-3)
+    mission = Mission.build(**WALK)  # type: ignore[arg-type]
+    page = replay(result, mission).write(tmp_path / "walk.html").read_text()
+    assert '"target":"' in page  # the encoded track, not the empty string of a still target
+    ax = plot_run(result, mission)
+    labels = ax.get_legend_handles_labels()[1]
+    assert "the target's track (walk)" in labels and "target last seen" in labels

@@ -26,7 +26,7 @@ def walk_params(mission: Mission) -> tuple[float, ...]:
 
 
 STILL = register_target_motion(TargetMotion(
-    "still", source="the paper: the target stays where it was drawn"))
+    "still", on_land=True, source="the paper: the target stays where it was drawn"))
 """The paper's target: no motion, and the kernel compiled without the seam."""
 WALK = register_target_motion(TargetMotion(
     "walk", walk.move, walk.start, state=len(walk.STATE), params=walk_params, on_land=True,
