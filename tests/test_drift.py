@@ -1,9 +1,12 @@
-"""The ``drift`` target motion against the Leeway model's own formulas (docs/model.md, Drift).
+"""The ``drift`` target motion against the Leeway model's own formulas (docs/model.md,
+Target motion, ``drift``).
 
 The expectations are computed here from the published coefficients (OBJECTPROP.DAT's rows,
 typed in again) and the model's equations, not from the implementation: the mean and the
 spread of many targets' displacements after a day under a constant wind and current, the
-jibe rate, and the forcing tables' interpolation. The hooks are called directly (no kernel).
+jibe rate, and the forcing tables' interpolation, with the hooks called directly. Then one
+kernel (CovB with a drifting target) against the reference's drift (tests/naive.py), and
+``sweep`` and ``design`` storing the drift settings.
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 """What drifts and what drives it: the Leeway model's object classes and the forcing tables
-(docs/model.md, Drift).
+(docs/model.md, Target motion, ``drift``).
 
 The Leeway model (Allen and Plourde 1999, *Review of Leeway: Field Experiments and
 Implementation*, USCG R&D Center report CG-D-08-99; Allen 2005, *Leeway Divergence*, CG-D-05-05)

@@ -1,5 +1,5 @@
 """``drift``: a person or an object at sea, moved by the Leeway model plus the surface current
-(docs/model.md, Drift).
+(docs/model.md, Target motion, ``drift``).
 
 The leeway of an object (Allen and Plourde 1999; Allen 2005) is linear in the 10 m wind speed
 ``W`` (m/s): downwind ``L_d = a_d W + b_d`` and crosswind ``L_c = a_s W + b_s`` on the object's
@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numba import njit
 
-from sarlink.config.leeway import Forcing, forcing_table, leeway_class
+from sarlink.config.leeway import forcing_table, leeway_class
 
 if TYPE_CHECKING:
     from sarlink.config import Mission
@@ -55,10 +55,10 @@ STATE = 3
 _JIBE, _N_WIND, _N_CURRENT, _ROWS = 9, 10, 11, 12
 
 
-def drift_params(object_class: str, wind: Forcing, current: Forcing,
+def drift_params(object_class: str, wind: object, current: object,
                  jibe_per_hour: float = JIBE_PER_HOUR) -> np.ndarray:
     """The hooks' parameter array for ``object_class`` under ``wind`` and ``current``
-    (each a pair or a table, :func:`sarlink.config.leeway.forcing_table`)."""
+    (each a pair, a table or their text, :func:`sarlink.config.leeway.forcing_table`)."""
     w, c = forcing_table(wind), forcing_table(current)
     head = [*leeway_class(object_class).coefficients, jibe_per_hour, len(w), len(c)]
     return np.array(head + [v for row in (*w, *c) for v in row], dtype=float)
