@@ -30,7 +30,9 @@ left (a route drone back to where it left its route). The powers are the energy 
 A walking target (``target.motion = walk``, docs/model.md, Target motion) walks here from the
 model's text: the heading's normal turn each step, the log-normal time it stops, the uniform
 headings drawn again until a step stays in the square, and its walk during ``target.delay``
-before take-off; it moves after the drones, so each step senses it where it is then.
+before take-off; it moves after the drones, so each step senses it where it is then. A
+drifting target (``drift``) drifts here from the same text: its Leeway fit drawn once, the
+wind and current read from their tables at the step's start, the jibe after the step.
 """
 
 from __future__ import annotations
@@ -39,10 +41,12 @@ import math
 from collections import deque
 from collections.abc import Sequence
 from dataclasses import dataclass
+from itertools import pairwise
 
 import numpy as np
 
 from sarlink.config import Mission
+from sarlink.config.leeway import LEEWAY_CLASSES
 from sarlink.engine.codes import PRIORITY_CODES
 from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
 from sarlink.engine.relays.placement import assign, plan
@@ -95,7 +99,7 @@ class Walker:
         self.heading = rng.random() * 2 * math.pi
         self.stop = t.walk_mobile * math.exp(t.walk_spread * rng.standard_normal())
 
-    def walk(self, at: tuple[float, float], t: float, dt: float) -> tuple[float, float]:
+    def move(self, at: tuple[float, float], t: float, dt: float) -> tuple[float, float]:
         """Where the person walks from ``at`` between ``t`` and ``t + dt``."""
         if t >= self.stop:
             return at
@@ -108,6 +112,54 @@ class Walker:
             self.heading = self.rng.random() * 2 * math.pi
         to = (at[0] + step * math.cos(self.heading), at[1] + step * math.sin(self.heading))
         return to if _inside(to, self.a) else at
+
+
+def _forcing(table: Sequence[tuple[float, float, float]], t: float) -> tuple[float, float]:
+    """A wind or current table's (east, north) at ``t``: linear between rows, held at the ends."""
+    if t <= table[0][0]:
+        return table[0][1], table[0][2]
+    for (t0, e0, n0), (t1, e1, n1) in pairwise(table):
+        if t <= t1:
+            f = (t - t0) / (t1 - t0)
+            return e0 + f * (e1 - e0), n0 + f * (n1 - n0)
+    return table[-1][1], table[-1][2]
+
+
+class Drifter:
+    """A person or an object at sea (docs/model.md, Target motion, ``drift``): the Leeway of
+    its class plus the current, drawing from the run's target stream its side (right with
+    probability 1/2), then the downwind fit error (again while the perturbed slope is
+    negative) and the crosswind one, then per step whether it jibes (0.04 per hour)."""
+
+    def __init__(self, mission: Mission, rng: np.random.Generator) -> None:
+        t = mission.target
+        fits = LEEWAY_CLASSES[t.drift_object]
+        self.down, self.sides = fits.dw, {1: fits.cwr, -1: fits.cwl}
+        self.wind, self.current, self.rng = t.drift_wind, t.drift_current, rng
+        self.side = 1 if rng.random() < 0.5 else -1
+        self.rd = rng.standard_normal()
+        while self.down[0] + self.rd * self.down[2] / 20 < 0:
+            self.rd = rng.standard_normal()
+        self.rc = rng.standard_normal()
+
+    def move(self, at: tuple[float, float], t: float, dt: float) -> tuple[float, float]:
+        """Where the target drifts from ``at`` between ``t`` and ``t + dt``."""
+        (wx, wy), (cx, cy) = _forcing(self.wind, t), _forcing(self.current, t)
+        w = math.hypot(wx, wy)
+        if w > 0:  # the error eps = r sigma: eps / 20 on the slope, eps / 2 on the offset
+            a, b, sigma = self.down
+            down = (a * w + b + self.rd * sigma * (w / 20 + 0.5)) / 100
+            a, b, sigma = self.sides[self.side]
+            cross = (a * w + b + self.rc * sigma * (w / 20 + 0.5)) / 100  # right of downwind
+            cx += down * wx / w + cross * wy / w
+            cy += down * wy / w - cross * wx / w
+        if self.rng.random() < 1 - (1 - 0.04) ** (dt / 3600):
+            self.side = -self.side
+        return at[0] + cx * dt, at[1] + cy * dt
+
+
+MOVERS = {"walk": Walker, "drift": Drifter}
+"""The moving targets the reference knows, by ``target.motion``."""
 
 
 def component(start: set[int], links: dict[int, set[int]], blocked: int) -> set[int]:
@@ -170,11 +222,12 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
     BS, TG = n, n + 1
-    walker = Walker(mission, streams.target) if mission.target.motion == "walk" else None
-    delay = round(mission.target.delay / dt) if walker else 0
+    motion = MOVERS.get(mission.target.motion)
+    mover = motion(mission, streams.target) if motion else None
+    delay = round(mission.target.delay / dt) if mover else 0
     for j in range(delay):
-        assert walker is not None
-        target = walker.walk(target, j * dt, dt)
+        assert mover is not None
+        target = mover.move(target, j * dt, dt)
     track = []
 
     pos = [bs] * n
@@ -698,13 +751,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                     drawn += descent if mode[i] == "landed" else 0.0
                     energy[i] -= drawn
                     used[i] += drawn
-        if walker is not None:  # the target moves last
-            target = walker.walk(target, (delay + k) * dt, dt)
+        if mover is not None:  # the target moves last
+            target = mover.move(target, (delay + k) * dt, dt)
 
     immediate = t_not is not None and t_not == t_det
     return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
                        farthest, *((sorties, ground_time, used) if battery else (None,) * 3),
-                       target_track=track if walker else None)
+                       target_track=track if mover else None)
 
 
 @dataclass

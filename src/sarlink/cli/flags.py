@@ -31,6 +31,7 @@ from pydantic.fields import FieldInfo
 from sarlink.config import READINGS, ConfigError, Mission, get_reading, param_groups
 from sarlink.config.base import read_toml
 from sarlink.config.geo import parse_lonlat
+from sarlink.config.leeway import LEEWAY_CLASSES
 from sarlink.config.mission import ENERGY_MODEL_WITH_BATTERY, flat_groups
 from sarlink.engine import relay_strategy_names, target_motion_names
 from sarlink.engine.energy import energy_model_names
@@ -172,6 +173,13 @@ FLAGS: tuple[Flag, ...] = _rows(
      "walk_turn", ONE_RUN),
     ("--walk-mobile", float, "walk: the median time the person keeps moving, s",
      "walk_mobile", ONE_RUN),
+    ("--drift-object", str, "with a drifting target: its Leeway object class, "
+     f"{', '.join(LEEWAY_CLASSES)}", "drift_object", {*ONE_RUN, "design"}),
+    ("--wind", str, "with a drifting target: the 10 m wind, m/s, 'east,north', or rows "
+     "'t,east,north; ...' over the seconds since it was last seen", "drift_wind",
+     {*ONE_RUN, "design"}),
+    ("--current", str, "with a drifting target: the surface current, m/s, as --wind",
+     "drift_current", {*ONE_RUN, "design"}),
     Flag("--reading", str, f"a named reading of what the paper leaves open "
          f"({', '.join(READINGS)}; docs/model.md); it overrides the config's readings table, "
          "flags override both", None, ONE_RUN | {"design"}, apply=_read),

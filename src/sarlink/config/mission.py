@@ -16,12 +16,14 @@ from pydantic import (
     Field,
     SerializerFunctionWrapHandler,
     ValidationInfo,
+    field_validator,
     model_serializer,
     model_validator,
 )
 
 from sarlink.config.base import Checked, ConfigError
 from sarlink.config.geo import FILE_KEYS, resolve_files
+from sarlink.config.leeway import Forcing, forcing_table, leeway_class
 from sarlink.config.region import Region, check_region
 
 __all__ = [
@@ -303,6 +305,31 @@ class Target(Checked):
         "last sighting, s (log-normal; then the person stops)")
     walk_spread: float = Field(
         1.0, ge=0, description="walk: the standard deviation of the log of the time mobile")
+    drift_object: str = Field(
+        "PIW-1", min_length=1,
+        description="with motion = drift: the Leeway object class, by OpenDrift's key "
+        "(sarlink.config.leeway.LEEWAY_CLASSES): PIW-1, a person in water of unknown state, "
+        "PIW-2 to PIW-6, life rafts, boats")
+    drift_wind: Forcing = Field(
+        ((0.0, 0.0, 0.0),),
+        description="with motion = drift: the 10 m wind, m/s: a pair east,north, or a table "
+        "of rows t,east,north (t in s since the target was last seen, increasing), linear "
+        "between rows")
+    drift_current: Forcing = Field(
+        ((0.0, 0.0, 0.0),),
+        description="with motion = drift: the surface current, m/s, a pair or a table as "
+        "drift_wind")
+
+    @field_validator("drift_object")
+    @classmethod
+    def _known_class(cls, name: str) -> str:
+        leeway_class(name)
+        return name
+
+    @field_validator("drift_wind", "drift_current", mode="before")
+    @classmethod
+    def _table(cls, value: Any) -> Forcing:
+        return forcing_table(value)
 
 
 class MtspSettings(Checked):

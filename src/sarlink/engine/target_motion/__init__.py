@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from sarlink.engine.target_motion import walk
+from sarlink.engine.target_motion import drift, walk
 from sarlink.engine.target_motion.model import TargetMotion
 from sarlink.engine.target_motion.registry import (
     TARGET_MOTIONS,
@@ -34,5 +34,11 @@ WALK = register_target_motion(TargetMotion(
            "log-normal time"))
 """A lost person on land (:mod:`.walk`)."""
 
-__all__ = ["STILL", "TARGET_MOTIONS", "WALK", "TargetMotion", "get_target_motion",
+DRIFT = register_target_motion(TargetMotion(
+    "drift", move=drift.move, start=drift.start, state=drift.STATE, params=drift.mission_params,
+    source="Leeway (Allen and Plourde 1999; Allen 2005) with OpenDrift's OBJECTPROP.DAT "
+    "coefficients, plus the current"))
+"""A person or an object at sea: leeway and current (:mod:`.drift`)."""
+
+__all__ = ["DRIFT", "STILL", "TARGET_MOTIONS", "WALK", "TargetMotion", "get_target_motion",
            "register_target_motion", "target_motion_names", "walk_params"]
