@@ -73,7 +73,8 @@ def run_side(label: str, src: Path, workdir: Path, workers: int | None) -> dict[
         raise SystemExit(f"{label}: design failed ({done.returncode}):\n{done.stderr[-3000:]}")
     return {"label": label, "wall": wall, "cpu": cpu, "load": samples,
             "started": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(time.time() - wall)),
-            "answer": json.loads(done.stdout)}
+            "answer": json.loads(done.stdout),
+            "breakdown": breakdown(workdir / "runs", workdir / "cache")}
 
 
 def _children_cpu() -> float:
@@ -83,23 +84,48 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def check(answer: dict[str, Any]) -> dict[str, Any] | None:
+def breakdown(runs: Path, cache: Path) -> dict[str, Any]:
+    """Where a side's work went, from what it left: runs and drone-seconds flown per planner
+    and option (each run stops at notification or ``t_d``), and the mTSP plans solved (the
+    plan files in its cache), with the team size each was solved for."""
+    import pandas as pd
+
+    from sarlink import load
+
+    frames = [load(folder) for folder in sorted((runs / "seed-2024").iterdir())]
+    df = pd.concat(frames, ignore_index=True)
+    flown = df["t_notify"].fillna(df["horizon"]).clip(upper=df["horizon"]) * df["drones"]
+    df = df.assign(flown=flown)
+    rows = []
+    for (planner, on_detect), group in df.groupby(["planner", "on_detect"], sort=True):
+        rows.append({"planner": planner, "on_detect": on_detect,
+                     "candidates": len(group[["drones", "alpha", "nr"]].drop_duplicates()),
+                     "runs": len(group), "drone_hours": float(group["flown"].sum() / 3600)})
+    plans = [json.loads(f.read_text()) for f in (cache / "plans").glob("*.json")]
+    salesmen = [int(plan["params"]["salesmen"]) for plan in plans]
+    return {"variants": rows, "plans": len(plans),
+            "plan_seconds": float(sum(plan.get("seconds", 0.0) for plan in plans)),
+            "plan_sizes": {str(n): salesmen.count(n) for n in sorted(set(salesmen))}}
+
+
+def check(answer: dict[str, Any], folder: Path) -> dict[str, Any] | None:
     """The recommended mission of ``answer`` flown ``CHECK_RUNS`` times with another seed, by
-    the working tree's code (so with its shared plan): runs that meet the deadline."""
-    from sarlink import simulate_many  # type: ignore[attr-defined]  # noqa: F401
+    the working tree's code (so with its one shared plan): the runs that meet ``t_d``."""
+    from sarlink import Experiment, sweep
+    from sarlink.design import Candidate, DesignRequest, PlannerVariant
 
-    return None
-
-
-def summary(side: dict[str, Any]) -> dict[str, Any]:
-    """The recommendation of a side's answer: planner, options, drones, P_s and runs."""
-    rec = side["answer"]["recommendation"]
+    rec = answer["recommendation"]
     if rec is None:
-        return {"planner": None}
-    chosen = rec["chosen"]
-    return {"planner": rec["planner"], "fixed": rec["fixed"], "drones": chosen["drones"],
-            "value": chosen["value"], "p": chosen["p"], "lo": chosen["lo"], "hi": chosen["hi"],
-            "runs": chosen["runs"], "used": side["answer"]["runs"]["used"]}
+        return None
+    request = DesignRequest.model_validate(answer["request"])
+    variant = PlannerVariant(rec["planner"], tuple(rec["fixed"].items()), request.split)
+    mission = Candidate(variant, rec["chosen"]["drones"], rec["chosen"]["value"]
+                        ).mission(request.base())
+    runs = sweep(Experiment(name="design check", seed=CHECK_SEED, runs=CHECK_RUNS,
+                            mission=mission), folder, progress=False)
+    met = int((runs["t_notify"] <= request.td).sum())
+    return {"label": rec["label"], "drones": rec["chosen"]["drones"], "met": met,
+            "runs": CHECK_RUNS, "ps": request.ps}
 
 
 def main() -> None:
@@ -132,12 +158,71 @@ def main() -> None:
                                     results_file.ROOT / "src", root / "new", args.workers)
             args.state.write_text(json.dumps(state, indent=1))
     if "old" in state and "new" in state:
+        with tempfile.TemporaryDirectory(prefix="design-check-") as tmp:
+            for side in ("old", "new"):
+                state[side]["check"] = check(state[side]["answer"], Path(tmp) / side)
+        args.state.write_text(json.dumps(state, indent=1))
         write(state, args.out)
 
 
 def write(state: dict[str, Any], out: Path) -> None:
     """The results file from both sides."""
-    raise NotImplementedError
+    old, new = state["old"], state["new"]
+    lines = [results_file.header("`sarlink design` on the coordinator's question: main against "
+                                 "the working tree"),
+             f"Request: `sarlink design {' '.join(REQUEST)}` (every planner, with and without "
+             "reporting drones, up to 22 drones, seed 2024), each side from empty folders "
+             "(runs, mTSP plans, Numba's compiled kernels: compiles are included), one side "
+             "after the other on this machine, under `nice -n 10`, default workers (one per "
+             "core). The machine was shared with other work throughout (load average sampled "
+             "every 30 s below; 2 cores): wall times depend on that load, CPU seconds (the "
+             "design's process and its workers) much less, and are the fairer comparison.",
+             "",
+             "| side | started | wall, s | CPU, s | load average (min / mean / max) | runs used "
+             "| mTSP plans solved | their solve time, s (wall, summed) | recommendation "
+             "| check: runs meeting t_d of 1000 |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for side in (old, new):
+        load = side["load"]
+        rec = side["answer"]["recommendation"]
+        chosen = "none" if rec is None else (
+            f"{rec['label']}, {rec['chosen']['drones']} drones, P_s = {rec['chosen']['p']:.3f} "
+            f"[{rec['chosen']['lo']:.3f}, {rec['chosen']['hi']:.3f}] from "
+            f"{rec['chosen']['runs']:,} runs")
+        checked = side.get("check")
+        verdict = "–" if checked is None else f"{checked['met']}"
+        b = side["breakdown"]
+        lines.append(f"| {side['label']} | {side['started']} | {side['wall']:.0f} "
+                     f"| {side['cpu']:.0f} | {min(load):.1f} / {sum(load) / len(load):.1f} / "
+                     f"{max(load):.1f} | {side['answer']['runs']['used']:,} | {b['plans']:,} "
+                     f"| {b['plan_seconds']:.0f} | {chosen} | {verdict} |")
+    lines += ["",
+              f"Speed-up: {old['wall'] / new['wall']:.1f}x in wall time, "
+              f"{old['cpu'] / new['cpu']:.1f}x in CPU time.",
+              "",
+              "The check flies the recommended mission (with the working tree's code, so with "
+              f"its one shared mTSP plan) {CHECK_RUNS} times with seed {CHECK_SEED}, not the "
+              "design's: the requirement is met if about "
+              f"{old['answer']['request']['ps']:g} of them or more meet t_d.",
+              "",
+              "## Where the runs went",
+              "",
+              "Per planner and option: the candidates (team size and setting) that got runs, "
+              "the runs, and the drone-hours flown (each run ends at the notification or at "
+              "t_d); a run's cost grows with its drones and its length. On main, each run of "
+              "an mTSP or mTSP-ConB candidate also solved a GA plan of its own (the plans "
+              "solved above).",
+              ""]
+    for side in (old, new):
+        lines += [f"### {side['label']}", "",
+                  "| planner | on_detect | candidates | runs | drone-hours |",
+                  "|---|---|---|---|---|"]
+        for row in side["breakdown"]["variants"]:
+            lines.append(f"| {row['planner']} | {row['on_detect']} | {row['candidates']} "
+                         f"| {row['runs']:,} | {row['drone_hours']:,.0f} |")
+        sizes = ", ".join(f"{n}: {k:,}" for n, k in side["breakdown"]["plan_sizes"].items())
+        lines += ["", f"mTSP plans solved, by team size: {sizes or 'none'}.", ""]
+    out.write_text("\n".join(lines))
 
 
 if __name__ == "__main__":
