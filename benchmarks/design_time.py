@@ -1,21 +1,20 @@
 """Wall and CPU time of ``sarlink design`` on git revision ``REV`` (today's main) against the
-working tree, on the same request, one after the other on this machine.
+working tree, on the same request, on this machine.
 
 Each side runs ``sarlink design ... --json`` in a process of its own (with this script's
-``nice``): the old one
-from a temporary git worktree of ``REV`` with that worktree's ``src`` first on ``PYTHONPATH``,
-the new one from this repository's ``src``. Each starts from empty folders (runs, mTSP plans,
-Numba's compiled kernels), so both pay their compiles and solve their plans. CPU time is that of
-the process and every worker it started (``wait4``'s rusage), the fairer number on a shared
-host; the load average is sampled every 30 s while each side runs. Then the recommendation of
-each side is checked with 1000 independent runs (another seed) of the mission it recommends,
-by the working tree's code. Run with
+``nice``): the old one from a temporary git worktree of ``REV`` with that worktree's ``src``
+first on ``PYTHONPATH``, the new one from this repository's ``src``. Each starts from empty
+folders (runs, mTSP plans, Numba's compiled kernels), so both pay their compiles and solve
+their plans. CPU time is that of the process and every worker it started (the rusage of
+reaped children), the fairer number on a shared host; the load average is sampled every 30 s
+while each side runs. Then the recommendation of each side is checked with 1000 independent
+runs (another seed) of the mission it recommends, by the working tree's code. Run with
 
     nice -n 10 python benchmarks/design_time.py main --out benchmarks/results/design-time.md
 
 The old design takes tens of minutes: ``--side old`` or ``--side new`` measures one side and
 keeps it in ``--state`` (JSON), so the two can be measured in two calls; the results file is
-written once the state holds both.
+written once the state holds both (``--side none``: from the state alone).
 """
 
 from __future__ import annotations
@@ -131,7 +130,8 @@ def check(answer: dict[str, Any], folder: Path) -> dict[str, Any] | None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("rev", help="the git revision to compare with (today's main)")
-    parser.add_argument("--side", choices=("old", "new", "both"), default="both")
+    parser.add_argument("--side", choices=("old", "new", "both", "none"), default="both",
+                        help="the side to measure; none: only check and write from --state")
     parser.add_argument("--state", type=Path, default=Path("benchmarks/results/design-time.json"))
     parser.add_argument("--workers", type=int, default=None)
     parser.add_argument("--out", type=Path, default=Path("benchmarks/results/design-time.md"))

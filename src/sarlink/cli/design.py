@@ -309,7 +309,7 @@ def design(
         if max_seconds is not None and not max_seconds >= 0:
             raise ConfigError(f"--max-seconds must be 0 or more, got {max_seconds:g}")
         answer = run_design(request, out, workers=workers, scheduler=scheduler,
-                            dask_local=dask_local, progress=not quiet,
+                            dask_local=dask_local, progress=not quiet and not json,
                             max_seconds=max_seconds)
     if plot is not None:
         import matplotlib.pyplot as plt

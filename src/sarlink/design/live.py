@@ -2,7 +2,7 @@
 
 A coordinator watching a design can stop it once the answer is good enough. In a terminal a
 live table redraws in place; in a log (a file, a CI job) a line is written per round. Both go
-to standard error, so ``--json`` output stays clean.
+to standard error, away from the answer.
 """
 
 from __future__ import annotations
