@@ -127,6 +127,33 @@ def check(answer: dict[str, Any], folder: Path) -> dict[str, Any] | None:
             "runs": CHECK_RUNS, "ps": request.ps}
 
 
+def unfinished(pid: int, label: str) -> dict[str, Any]:
+    """A side still running as process ``pid``: its wall and CPU seconds so far (those of the
+    process and its workers, from ``/proc``), lower bounds on what it will take."""
+    tick = os.sysconf("SC_CLK_TCK")
+
+    def stat(p: int) -> list[str]:
+        text = Path(f"/proc/{p}/stat").read_text()
+        return text[text.rindex(")") + 2:].split()  # fields from the state on
+
+    tree = [pid] + [int(d.name) for d in Path("/proc").iterdir() if d.name.isdigit()
+                    and _alive(d) and int(stat(int(d.name))[1]) == pid]
+    cpu = sum(int(stat(p)[11]) + int(stat(p)[12]) for p in tree) / tick
+    uptime = float(Path("/proc/uptime").read_text().split()[0])
+    wall = uptime - int(stat(pid)[19]) / tick
+    return {"label": label, "unfinished": True, "wall": wall, "cpu": cpu,
+            "load": [os.getloadavg()[0]], "answer": None, "breakdown": None,
+            "started": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(time.time() - wall))}
+
+
+def _alive(folder: Path) -> bool:
+    try:
+        (folder / "stat").read_text()
+    except OSError:
+        return False
+    return True
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("rev", help="the git revision to compare with (today's main)")
@@ -134,6 +161,9 @@ def main() -> None:
                         help="the side to measure; none: only check and write from --state")
     parser.add_argument("--state", type=Path, default=Path("benchmarks/results/design-time.json"))
     parser.add_argument("--workers", type=int, default=None)
+    parser.add_argument("--unfinished", type=int, default=None, metavar="PID",
+                        help="the old side still runs as process PID: write its time so far "
+                             "as a lower bound")
     parser.add_argument("--out", type=Path, default=Path("benchmarks/results/design-time.md"))
     args = parser.parse_args()
     state: dict[str, Any] = json.loads(args.state.read_text()) if args.state.exists() else {}
@@ -157,10 +187,13 @@ def main() -> None:
             state["new"] = run_side(f"working tree ({results_file.COMMIT})",
                                     results_file.ROOT / "src", root / "new", args.workers)
             args.state.write_text(json.dumps(state, indent=1))
+    if args.unfinished is not None:
+        state["old"] = unfinished(args.unfinished, f"{args.rev} (still running)")
     if "old" in state and "new" in state:
         with tempfile.TemporaryDirectory(prefix="design-check-") as tmp:
             for side in ("old", "new"):
-                state[side]["check"] = check(state[side]["answer"], Path(tmp) / side)
+                if state[side]["answer"] is not None:
+                    state[side]["check"] = check(state[side]["answer"], Path(tmp) / side)
         args.state.write_text(json.dumps(state, indent=1))
         write(state, args.out)
 
@@ -184,6 +217,11 @@ def write(state: dict[str, Any], out: Path) -> None:
              "|---|---|---|---|---|---|---|---|---|---|"]
     for side in (old, new):
         load = side["load"]
+        if side.get("unfinished"):
+            lines.append(f"| {side['label']} | {side['started']} | more than {side['wall']:.0f} "
+                         f"| more than {side['cpu']:.0f} | {load[0]:.1f} when written | – | – "
+                         "| – | not finished when this file was written | – |")
+            continue
         rec = side["answer"]["recommendation"]
         chosen = "none" if rec is None else (
             f"{rec['label']}, {rec['chosen']['drones']} drones, P_s = {rec['chosen']['p']:.3f} "
@@ -196,14 +234,15 @@ def write(state: dict[str, Any], out: Path) -> None:
                      f"| {side['cpu']:.0f} | {min(load):.1f} / {sum(load) / len(load):.1f} / "
                      f"{max(load):.1f} | {side['answer']['runs']['used']:,} | {b['plans']:,} "
                      f"| {b['plan_seconds']:.0f} | {chosen} | {verdict} |")
+    least = "at least " if old.get("unfinished") else ""
     lines += ["",
-              f"Speed-up: {old['wall'] / new['wall']:.1f}x in wall time, "
-              f"{old['cpu'] / new['cpu']:.1f}x in CPU time.",
+              f"Speed-up: {least}{old['wall'] / new['wall']:.1f}x in wall time, "
+              f"{least}{old['cpu'] / new['cpu']:.1f}x in CPU time.",
               "",
               "The check flies the recommended mission (with the working tree's code, so with "
               f"its one shared mTSP plan) {CHECK_RUNS} times with seed {CHECK_SEED}, not the "
               "design's: the requirement is met if about "
-              f"{old['answer']['request']['ps']:g} of them or more meet t_d.",
+              f"{new['answer']['request']['ps']:g} of them or more meet t_d.",
               "",
               "## Where the runs went",
               "",
@@ -214,6 +253,8 @@ def write(state: dict[str, Any], out: Path) -> None:
               "solved above).",
               ""]
     for side in (old, new):
+        if side["breakdown"] is None:
+            continue
         lines += [f"### {side['label']}", "",
                   "| planner | on_detect | candidates | runs | drone-hours |",
                   "|---|---|---|---|---|"]
