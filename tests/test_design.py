@@ -34,7 +34,7 @@ PAPER = {"on_detect": ["continue"]}
 
 def small(**fields: Any) -> DesignRequest:
     return DesignRequest(**{"mission": SMALL, "max_drones": 5, "candidate_runs": 1600,
-                            "options": PAPER, **fields})
+                            "options": PAPER, "every_planner": True, **fields})
 
 
 def candidate_runs(out: Path, answer: DesignAnswer) -> pd.DataFrame:
@@ -176,6 +176,33 @@ def test_each_candidate_folder_is_a_sweep_of_its_mission(
     assert int((runs["t_notify"] <= 600.0).sum()) == concov.chosen.successes
 
 
+# -- the same answer on any machine ------------------------------------------------------------
+
+
+def test_the_answer_is_the_same_with_one_and_two_workers(tmp_path: Path) -> None:
+    request = DesignRequest(mission=SMALL, td=600.0, ps=0.6, planners=("covb",),
+                            options=PAPER, max_drones=3, candidate_runs=200)
+    one = design(request, tmp_path / "one", workers=1, progress=False)
+    two = design(request, tmp_path / "two", workers=2, progress=False)
+    assert one.runs_simulated == two.runs_simulated == one.runs_used > 0
+    assert one.to_json() == two.to_json()
+
+
+def test_a_time_budget_stops_between_rounds_at_the_answer_of_those_runs(
+        tmp_path: Path) -> None:
+    """``max_seconds = 0`` stops after the first round: its answer is that of a run budget
+    of exactly those runs (stored and reused, so none is simulated again)."""
+    request = DesignRequest(mission=SMALL, td=600.0, ps=0.6, planners=("covb",),
+                            options=PAPER, max_drones=3, candidate_runs=200)
+    timed = design(request, tmp_path, progress=False, max_seconds=0.0)
+    assert timed.ended_by == "time"
+    assert timed.runs_used == request.first_runs * len(timed.planners[0].team_sizes)
+    budget = design(request.model_copy(update={"max_runs": timed.runs_used}), tmp_path,
+                    progress=False)
+    assert budget.ended_by == "budget" and budget.runs_simulated == 0
+    assert budget.to_json()["planners"] == timed.to_json()["planners"]
+
+
 # -- options and bad requests --------------------------------------------------------------------
 
 
@@ -239,7 +266,7 @@ def test_cli_prints_json_and_draws_the_figure(tmp_path: Path) -> None:
         "design", "--size", "2000", "--rc", "500", "--td", "600", "--ps", "0.6",
         "--planner", "covb", "--planner", "concov", "--alpha-step", "0.5", "--alpha-tol", "0.5",
         "--max-drones", "3", "--option", "on_detect=continue", "--out", str(tmp_path / "runs"),
-        "--json", "--plot", str(figure)])
+        "--every-planner", "--json", "--plot", str(figure)])
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
     assert data["recommendation"]["smallest"] in (1, 2, 3)  # a size within --max-drones
@@ -260,7 +287,7 @@ def test_a_killed_design_resumes_to_the_same_answer(
             "--planner", "covb", "--planner", "concov",
             "--alpha-step", "0.5", "--alpha-tol", "0.5", "--max-drones", "5",
             "--candidate-runs", "1600", "--option", "on_detect=continue", "--workers", "1",
-            "--out", str(tmp_path), "--quiet"]
+            "--every-planner", "--out", str(tmp_path), "--quiet"]
     process = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 120
     while len(list(tmp_path.glob("seed-2024/*/points/*/runs-*.parquet"))) < 5:

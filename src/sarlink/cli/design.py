@@ -78,6 +78,43 @@ def _setting(planner: PlannerAnswer) -> str:
 
 def _print(answer: DesignAnswer) -> None:
     r = answer.request
+    if r.every_planner:
+        _print_planners(answer)
+    best = answer.recommendation
+    if best is not None and best.tuning is not None and not r.every_planner:
+        _print_tuning(best)
+    splits = r.split or (best is not None and best.chosen is not None
+                         and best.chosen.relays > 0)
+    if best is None or best.chosen is None:
+        console.print(f"[bold]No planner reaches P_s >= {r.ps:g} within {r.max_drones} "
+                      "drones.[/]")
+    else:
+        setting = "" if best.tuning is None or r.split else f", {_setting(best)}"
+        split = f" ({_split(best.chosen)})" if splits else ""
+        console.print(f"[bold]Recommendation: {best.label} with {best.chosen.drones} drones"
+                      f"{split}{setting}[/]: "
+                      f"P_s({r.td:g} s) = {_probability(best.chosen)} from "
+                      f"{best.chosen.runs:,} runs, mean mission time "
+                      f"{_minutes(best.chosen.mission_time)} (needed: {r.ps:g} at "
+                      f"{r.confidence:.0%} confidence, r_c = {r.mission.channel.rc:g} m).",
+                      highlight=False)
+        if best.undecided:
+            console.print(f"Team sizes {_sizes(best.undecided)} stayed too close to tell: "
+                          "the true smallest may be one.", highlight=False)
+    ended = ("the statistics" if answer.ended_by == "statistics"
+             else f"the budget (--max-runs {r.max_runs:,}): more runs could change it"
+             if answer.ended_by == "budget"
+             else "the time (--max-seconds): more runs could change it")
+    every = "" if r.every_planner else " (--every-planner: the smallest team of each planner)"
+    console.print(f"Runs: {answer.runs_used:,} used ({answer.runs_simulated:,} simulated now, "
+                  f"{answer.runs_used - answer.runs_simulated:,} reused); a full grid of "
+                  f"{answer.grid_points:,} candidates at 2000 runs each: {answer.grid_runs:,}. "
+                  f"The search was ended by {ended}.{every}", highlight=False)
+
+
+def _print_planners(answer: DesignAnswer) -> None:
+    """The per-planner table of ``--every-planner``, with each planner's tuning."""
+    r = answer.request
     m = r.mission
     area = area_label(m.region, m.area.size)
     teams = (f"up to {r.max_drones}" if r.min_drones == 1 else f"{r.min_drones}"
@@ -111,24 +148,6 @@ def _print(answer: DesignAnswer) -> None:
     if held:
         console.print(f"Held at the mission's value while the split is tuned: "
                       f"{'; '.join(held)} (--option fixes another).", highlight=False)
-    best = answer.recommendation
-    if best is None or best.chosen is None:
-        console.print(f"[bold]No planner reaches P_s >= {r.ps:g} within {r.max_drones} "
-                      "drones.[/]")
-    else:
-        setting = "" if best.tuning is None or r.split else f", {_setting(best)}"
-        split = f" ({_split(best.chosen)})" if splits else ""
-        console.print(f"[bold]Recommendation: {best.label} with {best.chosen.drones} drones"
-                      f"{split}{setting}[/]: "
-                      f"P_s = {_probability(best.chosen)} from "
-                      f"{best.chosen.runs:,} runs, mean mission time "
-                      f"{_minutes(best.chosen.mission_time)}.", highlight=False)
-    ended = ("the statistics" if answer.ended_by == "statistics"
-             else f"the budget (--max-runs {r.max_runs:,}): more runs could change it")
-    console.print(f"Runs: {answer.runs_used:,} used ({answer.runs_simulated:,} simulated now, "
-                  f"{answer.runs_used - answer.runs_simulated:,} reused); a full grid of "
-                  f"{answer.grid_points:,} candidates at 2000 runs each: {answer.grid_runs:,}. "
-                  f"The search was ended by {ended}.", highlight=False)
 
 
 def _sizes(sizes: tuple[int, ...]) -> str:
@@ -223,6 +242,12 @@ def design(
     confidence: Annotated[float, typer.Option(help="confidence of every decision")] = 0.95,
     max_runs: Annotated[int, typer.Option(help="budget: runs the whole design may use")
                         ] = 400_000,
+    max_seconds: Annotated[float | None, typer.Option(
+        help="no round of runs starts after this many seconds (the answer so far is given); "
+             "changes when the design stops, never which runs it flies")] = None,
+    every_planner: Annotated[bool, typer.Option(
+        "--every-planner", help="the smallest team and setting of every planner, not only "
+                                "the recommendation (more runs: larger teams too)")] = False,
     candidate_runs: Annotated[int, typer.Option(help="most runs of one candidate")] = 6400,
     first_runs: Annotated[int, typer.Option(help="runs of a candidate at its first look")] = 50,
     margin: Annotated[float, typer.Option(
@@ -240,7 +265,8 @@ def design(
         "--dask-local", help="run on a Dask LocalCluster instead of the process pool")] = False,
     json: Annotated[bool, typer.Option("--json", help="print the answer as JSON")] = False,
     plot: Annotated[Path | None, typer.Option(help="write a figure of the answer here")] = None,
-    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="no progress bar")] = False,
+    quiet: Annotated[bool, typer.Option(
+        "--quiet", "-q", help="no live view of the best candidate so far")] = False,
     sizes: Annotated[str | None, typer.Option(
         help="without --rc: team sizes to find the range of, e.g. 4,10,22; "
              "default: 1 to --max-drones")] = None,
@@ -270,6 +296,7 @@ def design(
             "confidence": confidence, "max_runs": max_runs,
             "candidate_runs": candidate_runs, "first_runs": first_runs, "margin": margin,
             "alpha_step": alpha_step, "alpha_tol": alpha_tol, "seed": seed,
+            "every_planner": every_planner,
         }
         if planner is not None:
             fields["planners"] = tuple(planner)
@@ -279,8 +306,11 @@ def design(
             request = DesignRequest.from_dict(fields)
         except ConfigError as exc:
             raise ConfigError(_as_option(str(exc))) from None
+        if max_seconds is not None and not max_seconds >= 0:
+            raise ConfigError(f"--max-seconds must be 0 or more, got {max_seconds:g}")
         answer = run_design(request, out, workers=workers, scheduler=scheduler,
-                            dask_local=dask_local, progress=not quiet and not json)
+                            dask_local=dask_local, progress=not quiet and not json,
+                            max_seconds=max_seconds)
     if plot is not None:
         import matplotlib.pyplot as plt
 

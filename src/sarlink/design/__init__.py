@@ -8,13 +8,11 @@ probability at least ``P_s``?" by simulation, spending runs where the decision i
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
-
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
 from sarlink.design.answer import CandidateEstimate, DesignAnswer, PlannerAnswer, TeamSize, Tuning
 from sarlink.design.candidates import Candidate, PlannerVariant, Setting
+from sarlink.design.live import LiveView
 from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.search import search
@@ -43,23 +41,17 @@ DEFAULT_OUT = Path("design-results")
 
 def design(request: DesignRequest, out: str | Path = DEFAULT_OUT, *, workers: int | None = None,
            scheduler: str | None = None, dask_local: bool = False,
-           progress: bool = True) -> DesignAnswer:
+           progress: bool = True, max_seconds: float | None = None) -> DesignAnswer:
     """Answer ``request``; runs are stored under ``out`` and reused by any later design.
 
     ``workers``, ``scheduler`` and ``dask_local`` choose where runs execute, as for
-    :func:`sarlink.sweep`. ``progress`` shows the candidates decided and the runs spent (only
-    when standard output is a terminal).
+    :func:`sarlink.sweep`. ``progress`` shows the best candidate so far and its interval
+    after every round (:class:`~sarlink.design.live.LiveView`, on standard error).
+    ``max_seconds``: no round starts after that many seconds; it changes when the search
+    stops, never which runs it flies.
     """
-    bar = Progress(TextColumn("design"), BarColumn(), MofNCompleteColumn(),
-                   TextColumn("candidates decided, {task.fields[used]:,} runs used, "
-                              "{task.fields[simulated]:,} simulated"),
-                   disable=not (progress and sys.stdout.isatty()))
-    with start_workers(workers, scheduler=scheduler, dask_local=dask_local) as pool, bar:
-        task = bar.add_task("design", total=None, used=0, simulated=0)
+    with start_workers(workers, scheduler=scheduler, dask_local=dask_local) as pool, \
+            LiveView(progress) as view:
         runs = Runs(out, request.seed, request.td, pool=pool,
-                    on_runs=lambda k: bar.update(task, simulated=runs.simulated))
-
-        def rounds(decided: int, opened: int, used: int) -> None:
-            bar.update(task, completed=decided, total=opened, used=used)
-
-        return search(request, runs, rounds)
+                    on_runs=lambda k: view.runs(runs.simulated))
+        return search(request, runs, view.round, max_seconds=max_seconds)

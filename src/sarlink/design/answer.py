@@ -75,7 +75,7 @@ class Tuning:
     """Every value tried, in increasing order."""
     ended_by: str
     """``statistics``: one value is best or the rest are within the margin; ``cap``: every
-    value left had its most runs; ``budget``: the budget ran out."""
+    value left had its most runs; ``budget``: the budget ran out; ``time``: the time did."""
 
 
 @dataclass(frozen=True)
@@ -88,7 +88,9 @@ class PlannerAnswer:
     fixed: dict[str, Any]
     """The variant's extra mission parameters."""
     status: str
-    """``reached``, ``not reachable`` (every team size fails) or ``undecided``."""
+    """``reached``, ``not reachable`` (every team size fails), ``undecided``, or for the
+    recommendation alone ``larger`` (every size up to the recommended team fails; larger
+    ones were not tried)."""
     smallest: int | None
     chosen: CandidateEstimate | None
     """The candidate at the smallest team, at its best setting."""
@@ -116,7 +118,8 @@ class DesignAnswer:
     grid_points: int
     """Candidates of the full grid at the finest setting resolution the design reached."""
     ended_by: str
-    """``statistics``, or ``budget`` when ``max_runs`` stopped runs the search wanted."""
+    """``statistics``, ``budget`` when ``max_runs`` stopped runs the search wanted, or
+    ``time`` when ``max_seconds`` stopped the search after a round."""
 
     @property
     def recommendation(self) -> PlannerAnswer | None:

@@ -59,6 +59,9 @@ class DesignRequest(Checked):
                              description="finest alpha spacing of the refinement")
     seed: int = Field(2024, ge=0, description="seed of every run: run k of every candidate "
                       "has the same target")
+    every_planner: bool = Field(False, description="answer for every planner (its smallest "
+                                "team and setting); else the recommendation alone, for which "
+                                "no team larger than the smallest one proven gets runs")
 
     @field_validator("planners")
     @classmethod
@@ -132,8 +135,10 @@ class DesignRequest(Checked):
 
     def base(self) -> Mission:
         """The mission every candidate starts from: simulated to ``td`` and no further, and
-        only until the BS is notified, the one event ``P_s(td)`` reads."""
-        return self.mission.replace(horizon=self.td, stop="notified")
+        only until the BS is notified, the one event ``P_s(td)`` reads; an mTSP team flies
+        the one plan of its size that would be exported (``mtsp_plan = shared``, seed
+        ``mtsp.plan_seed``), solved once, not a plan per run."""
+        return self.mission.replace(horizon=self.td, stop="notified", mtsp_plan="shared")
 
     def variants(self) -> list[PlannerVariant]:
         """Every planner with every combination of the options, in request order."""

@@ -9,7 +9,12 @@ round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`
    ladder is decided, every smaller size is opened. A size meets when one of its settings
    does; it fails when all do. Sizes above the smallest that meets are never run again. The
    ladder only orders the work: the answer does not assume that ``P_s`` grows with the team.
-2. **Best setting.** At the smallest team of a tunable variant, its settings race: all grow
+   For the recommendation alone (``every_planner`` off), sizes above the smallest that meets
+   for *any* variant are never run again either: the recommendation is the smallest team
+   overall, so no larger one can be it (that size itself stays open to every variant, whose
+   ``P_s`` there breaks ties).
+2. **Best setting.** At the smallest team of a tunable variant (for the recommendation alone:
+   only at the smallest team overall), its settings race: all grow
    together, a setting shown worse than the current best (exact McNemar test on the common
    runs) drops out, and the race ends when one is left or the rest are shown within ``margin``
    of the best. A continuous setting is then refined: the two midpoints beside the best join
@@ -22,11 +27,16 @@ tuned), "meets" is judged at error ``δ/(K·G)`` per setting and look,
 "fails" at ``δ/K``, and eliminations at ``δ/(K·(G−1))``, where ``δ`` is the one-sided error of
 the requested confidence (0.025 at 95 %). So each team size of each planner is misjudged with
 probability at most ``δ``, and at the tuned size the best setting is dropped with probability
-at most ``δ``.
+at most ``δ``. Leaving sizes unrun makes no decision that is made less sure.
+
+A time budget (``max_seconds``) is looked at only between rounds: it decides after which
+round the search stops, never which runs a round flies, so the answer after a given round is
+the same on any machine and with any number of workers.
 """
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
@@ -37,10 +47,28 @@ from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
 from sarlink.design.sequential import Decision, Schedule, decide, not_worse_by, worse
 
-__all__ = ["Errors", "errors", "search"]
+__all__ = ["Errors", "Snapshot", "errors", "search"]
 
-Progress = Callable[[int, int, int], None]
-"""Called after each round with (candidates decided, candidates opened, runs used)."""
+
+@dataclass(frozen=True)
+class Snapshot:
+    """Where a search stands after a round: what a live view shows."""
+
+    decided: int
+    """Candidates decided (meets, fails or borderline)."""
+    opened: int
+    """Candidates opened so far."""
+    used: int
+    """Runs the decisions rest on."""
+    label: str | None
+    """The planner variant of the best candidate so far, or None before any run."""
+    best: CandidateEstimate | None
+    """The best candidate so far: the smallest team that meets (the highest ``P_s`` among
+    them), or while none does, the candidate with the highest lower bound."""
+
+
+Progress = Callable[[Snapshot], None]
+"""Called after each round with where the search stands."""
 
 
 @dataclass
@@ -117,8 +145,11 @@ class _Search:
     progress: Progress | None
     schedule: Schedule = field(init=False)
     base: Mission = field(init=False)
+    max_seconds: float | None = None
     cells: dict[PlannerVariant, dict[int, _Cell]] = field(default_factory=dict)
     budget_hit: bool = False
+    out_of_time: bool = False
+    started: float = field(default_factory=time.monotonic)
 
     def __post_init__(self) -> None:
         self.schedule = self.request.schedule()
@@ -153,7 +184,10 @@ class _Search:
 
     def spend(self, wanted: Sequence[tuple[_Arm, int]]) -> bool:
         """Grow arms to the run counts wanted, in order, while the budget lasts; False when
-        the budget stopped any (then nothing after it in the order runs either)."""
+        the budget stopped any (then nothing after it in the order runs either), or when the
+        time is up after this round (then no later round runs)."""
+        if self.out_of_time:
+            return False
         left = self.request.max_runs - self.used()
         allowed = []
         for arm, runs in wanted:
@@ -164,11 +198,30 @@ class _Search:
             allowed.append((arm.mission, runs))
             left -= extra
         self.runs.grow(allowed)
-        if self.progress is not None:
-            arms = self.arms()
-            self.progress(sum(a.verdict is not Decision.OPEN for a in arms), len(arms),
-                          self.used())
-        return len(allowed) == len(wanted)
+        if self.max_seconds is not None and \
+                time.monotonic() - self.started >= self.max_seconds:
+            self.out_of_time = True
+        return len(allowed) == len(wanted) and not self.out_of_time
+
+    @property
+    def ended_by(self) -> str:
+        """What stopped the search early (``time``, ``budget``), else ``statistics``."""
+        return "time" if self.out_of_time else "budget" if self.budget_hit else "statistics"
+
+    def report(self) -> None:
+        """Tell ``progress`` where the search stands."""
+        if self.progress is None:
+            return
+        arms = self.arms()
+        ran = [a for a in arms if self.tally(a).runs]
+        best = None
+        if ran:
+            meets = [a for a in ran if a.verdict is Decision.MEETS]
+            best = (min(meets, key=lambda a: (a.candidate.drones, -self.tally(a).p)) if meets
+                    else max(ran, key=lambda a: self.tally(a).interval()[0]))
+        self.progress(Snapshot(sum(a.verdict is not Decision.OPEN for a in arms), len(arms),
+                               self.used(), None if best is None else best.candidate.variant.label,
+                               None if best is None else self.estimate(best)))
 
     def judge(self, arm: _Arm, cell: _Cell) -> None:
         tally = self.tally(arm)
@@ -182,11 +235,21 @@ class _Search:
         meets = [n for n, c in self.cells[variant].items() if c.verdict is Decision.MEETS]
         return min(meets, default=None)
 
+    def ceiling(self) -> int | None:
+        """For the recommendation alone, the largest team worth runs: the smallest that meets
+        for any variant (None: every size, or no size meets yet)."""
+        if self.request.every_planner:
+            return None
+        return min(filter(None, map(self.smallest, self.cells)), default=None)
+
     def active(self, variant: PlannerVariant) -> list[_Cell]:
         """The open cells of ``variant`` worth runs now (see the module docstring)."""
         team = self.request.sizes(variant)
         smallest = self.smallest(variant)
         below = team if smallest is None else range(team.start, smallest)
+        ceiling = self.ceiling()
+        if ceiling is not None:
+            below = range(below.start, min(below.stop, ceiling + 1))
         probes = [n for n in _ladder(team) if n in below]
         ladder_done = all(self.cell(variant, n).verdict is not Decision.OPEN for n in probes)
         sizes = below if smallest is not None or ladder_done else probes
@@ -208,6 +271,7 @@ class _Search:
             complete = self.spend([(arm, n) for _, arm, n in wanted])
             for cell, arm, _ in wanted:
                 self.judge(arm, cell)
+            self.report()
             if not complete:
                 return
 
@@ -226,8 +290,9 @@ class _Search:
             lagging = [(a, runs) for a in survivors if self.tally(a).runs < runs]
             if lagging:
                 if not self.spend(lagging):
-                    ended_by = "budget"
+                    ended_by = self.ended_by
                     break
+                self.report()
                 continue
             best = self.best(survivors)
             won = self.tally(best).success
@@ -249,8 +314,9 @@ class _Search:
                 ended_by = "cap"
                 break
             if not self.spend([(a, nxt) for a in survivors]):
-                ended_by = "budget"
+                ended_by = self.ended_by
                 break
+            self.report()
         for arm in cell.arms:
             self.judge(arm, cell)
         best = self.best(survivors)
@@ -292,16 +358,20 @@ class _Search:
                            for n, c in sorted(cells.items())
                            if any(self.tally(a).runs for a in c.arms))
         sizes = self.request.sizes(variant)
-        limit = sizes.stop if smallest is None else smallest
+        ceiling = self.ceiling()
+        tried = sizes.stop if ceiling is None else min(sizes.stop, ceiling + 1)
+        limit = tried if smallest is None else smallest
         undecided = tuple(n for n in range(sizes.start, limit)
                           if n not in cells or cells[n].verdict is not Decision.FAILS)
         chosen = None
         if smallest is not None:
-            chosen = (self.estimate(cells[smallest].arms[0]) if tuning is None
-                      else tuning.best)
+            meets = [a for a in cells[smallest].arms if a.verdict is Decision.MEETS]
+            chosen = (self.estimate(max(meets, key=lambda a: self.tally(a).p))
+                      if tuning is None else tuning.best)
             status = "reached"
         else:
-            status = "undecided" if undecided else "not reachable"
+            status = ("undecided" if undecided else "not reachable" if tried == sizes.stop
+                      else "larger")
         held = variant.own if variant.split else None
         return PlannerAnswer(variant.planner, variant.label, dict(variant.fixed), status,
                              smallest, chosen, undecided, team_sizes, tuning,
@@ -325,13 +395,16 @@ def _grid_points(request: DesignRequest) -> int:
     return total
 
 
-def search(request: DesignRequest, runs: Runs, progress: Progress | None = None
-           ) -> DesignAnswer:
-    """Answer ``request``, running what it needs through ``runs``."""
-    state = _Search(request, runs, progress)
+def search(request: DesignRequest, runs: Runs, progress: Progress | None = None, *,
+           max_seconds: float | None = None) -> DesignAnswer:
+    """Answer ``request``, running what it needs through ``runs``; with ``max_seconds``, no
+    round starts after that many seconds (the answer then says ``ended_by = "time"``)."""
+    state = _Search(request, runs, progress, max_seconds=max_seconds)
     state.find_smallest()
+    ceiling = state.ceiling()
     tunings = {v: state.tune(v, state.cells[v][n]) for v in state.cells
-               if v.setting is not None and (n := state.smallest(v)) is not None}
+               if v.setting is not None and (n := state.smallest(v)) is not None
+               and (ceiling is None or n == ceiling)}
     planners = tuple(state.answer(v, tunings.get(v)) for v in state.cells)
     reached = [i for i, p in enumerate(planners) if p.chosen is not None]
 
@@ -342,4 +415,4 @@ def search(request: DesignRequest, runs: Runs, progress: Progress | None = None
 
     return DesignAnswer(
         request, planners, min(reached, key=rank, default=None), state.used(),
-        runs.simulated, _grid_points(request), "budget" if state.budget_hit else "statistics")
+        runs.simulated, _grid_points(request), state.ended_by)
