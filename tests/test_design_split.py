@@ -37,8 +37,8 @@ def request(**fields: Any) -> DesignRequest:
 
 def flown(answer: DesignAnswer, drones: int, **params: Any) -> Mission:
     """The mission a candidate of ``answer`` flew (the design's horizon and stop)."""
-    return answer.request.mission.replace(planner="covb", drones=drones, horizon=TD,
-                                          stop="notified", on_detect="continue", **params)
+    return answer.request.base().replace(planner="covb", drones=drones, on_detect="continue",
+                                         **params)
 
 
 # -- the counts: settings per team size and the error each decision is judged at ----------------
@@ -123,7 +123,7 @@ def test_the_held_setting_is_reported_without_a_run(tmp_path: Path) -> None:
 @pytest.fixture(scope="module")
 def split(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, DesignAnswer]:
     out = tmp_path_factory.mktemp("split")
-    return out, design(request(split=True), out, progress=False)
+    return out, design(request(split=True, every_planner=True), out, progress=False)
 
 
 def test_the_split_is_tuned_at_the_smallest_team(split: tuple[Path, DesignAnswer]) -> None:
@@ -190,7 +190,7 @@ def test_the_cli_prints_the_split(split: tuple[Path, DesignAnswer]) -> None:
     result = CliRunner().invoke(app, [
         "design", "--size", "2000", "--rc", "500", "--td", str(TD), "--ps", str(PS),
         "--planner", "covb", "--option", "on_detect=continue", "--max-drones", str(LARGEST),
-        "--candidate-runs", "800", "--split", "--out", str(out), "--quiet"])
+        "--candidate-runs", "800", "--split", "--every-planner", "--out", str(out), "--quiet"])
     assert result.exit_code == 0, result.output
     text = " ".join(result.output.split())
     chosen = covb.chosen

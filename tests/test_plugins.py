@@ -31,6 +31,7 @@ from sarlink import (
     register_planner,
     register_radio,
     register_relay_strategy,
+    register_target_motion,
     relay_strategy_names,
     simulate,
     sweep,
@@ -38,6 +39,7 @@ from sarlink import (
 from sarlink.engine import RadioModel, energy, radios, relays
 from sarlink.engine.radios import DISC, lognormal
 from sarlink.engine.streams import run_streams
+from sarlink.engine.target_motion import WALK
 from sarlink.planners import registry, rules
 from sarlink.registry import KINDS, adopt_plugins, plugins_in_code
 from sarlink.simulation import prepare
@@ -203,10 +205,11 @@ def test_what_is_registered_in_code_is_adopted_by_workers_and_nothing_else() -> 
     register_planner(PLANNER)
     register_relay_strategy(MIDPOINT)
     register_energy_model(HEAVY)
+    register_target_motion(replace(WALK, name="stroll"))
     found = plugins_in_code()
     assert {k: [e.obj.name for e in v] for k, v in found.items()} == {
         "radio": ["cut-bs"], "relay": ["midpoint"], "planner": ["covb-again"],
-        "energy_model": ["heavy"]}
+        "energy_model": ["heavy"], "target_motion": ["stroll"]}
     adopt_plugins(found)  # the same objects: nothing changes
     register_planner(replace(PLANNER, label="Other"), replace=True)
     with pytest.raises(ConfigError, match="planner name 'covb-again' means another planner in "

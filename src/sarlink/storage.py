@@ -438,6 +438,15 @@ def _with_checkpoints(table: pa.Table) -> pa.Table:
     return table.append_column("checkpoints", pa.array([times] * table.num_rows))
 
 
+def _hashable(value: Any) -> Any:
+    """A list column's value as nested tuples (``bs``, a forcing table's rows), None kept."""
+    if value is None:
+        return None
+    if isinstance(value, (np.ndarray, list, tuple)):
+        return tuple(_hashable(v) for v in value)
+    return value
+
+
 def _frame(stored: Sequence[_Stored], runs: int) -> pd.DataFrame:
     """One DataFrame of runs ``0 .. runs-1`` from the valid files of each point, in order."""
     tables = []
@@ -457,8 +466,7 @@ def _frame(stored: Sequence[_Stored], runs: int) -> pd.DataFrame:
         if pa.types.is_list(col.type):  # hashable values, so that one can group by them
             heads = df[name].iloc[firsts]
             df[name] = df["point"].map(
-                {p: None if v is None else tuple(v) for p, v in zip(df["point"].iloc[firsts],
-                                                                    heads, strict=True)})
+                {p: _hashable(v) for p, v in zip(df["point"].iloc[firsts], heads, strict=True)})
         elif col.optional and pa.types.is_integer(col.type):
             df[name] = df[name].astype("Int64")
     return df
