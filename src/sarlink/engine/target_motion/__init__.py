@@ -4,8 +4,6 @@ the registry that finds them by name (:mod:`.registry`). docs/model.md, Target m
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from sarlink.engine.target_motion import drift, walk
 from sarlink.engine.target_motion.model import TargetMotion
 from sarlink.engine.target_motion.registry import (
@@ -15,21 +13,11 @@ from sarlink.engine.target_motion.registry import (
     target_motion_names,
 )
 
-if TYPE_CHECKING:
-    from sarlink.config import Mission
-
-
-def walk_params(mission: Mission) -> tuple[float, ...]:
-    """The walk's parameters (:data:`.walk.PARAMS`) from the mission's ``[target]`` group."""
-    t = mission.target
-    return (t.walk_speed, t.walk_turn, t.walk_mobile, t.walk_spread)
-
-
 STILL = register_target_motion(TargetMotion(
     "still", on_land=True, source="the paper: the target stays where it was drawn"))
 """The paper's target: no motion, and the kernel compiled without the seam."""
 WALK = register_target_motion(TargetMotion(
-    "walk", walk.move, walk.start, state=len(walk.STATE), params=walk_params, on_land=True,
+    "walk", walk.move, walk.start, state=len(walk.STATE), params=walk.mission_params, on_land=True,
     source="a lost person: a heading random walk at a constant speed, stopping after a "
            "log-normal time"))
 """A lost person on land (:mod:`.walk`)."""
@@ -41,4 +29,4 @@ DRIFT = register_target_motion(TargetMotion(
 """A person or an object at sea: leeway and current (:mod:`.drift`)."""
 
 __all__ = ["DRIFT", "STILL", "TARGET_MOTIONS", "WALK", "TargetMotion", "get_target_motion",
-           "register_target_motion", "target_motion_names", "walk_params"]
+           "register_target_motion", "target_motion_names"]

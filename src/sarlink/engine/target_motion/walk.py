@@ -18,6 +18,7 @@ Parameters (``tp``, :data:`PARAMS`): ``speed`` (m/s), ``turn`` (rad per minute),
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numba import njit
@@ -25,12 +26,21 @@ from numba import njit
 from sarlink.engine.area import TRIES, clear
 from sarlink.engine.area import contains as area_contains
 
-__all__ = ["PARAMS", "STATE", "move", "start"]
+if TYPE_CHECKING:
+    from sarlink.config import Mission
+
+__all__ = ["PARAMS", "STATE", "mission_params", "move", "start"]
 
 PARAMS = ("speed", "turn", "mobile", "spread")
 """The names of the parameter array's entries, in order."""
 STATE = ("heading", "stop")
 """The names of a target's state entries, in order."""
+
+
+def mission_params(mission: Mission) -> tuple[float, ...]:
+    """The parameters (:data:`PARAMS`) from the mission's ``[target]`` group."""
+    t = mission.target
+    return (t.walk_speed, t.walk_turn, t.walk_mobile, t.walk_spread)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
