@@ -2,9 +2,9 @@
 wind and current (docs/model.md, Drift).
 
 OpenDrift (PyPI ``opendrift``) cannot share the project's environment (its dependencies
-conflict with the lock), so it is installed into a venv of its own, outside the repository:
+conflict with the lock), so it is installed into a venv of its own (``.opendrift``, ignored by git):
 
-    python3 -m venv /work/wt/od-venv && /work/wt/od-venv/bin/pip install opendrift
+    python3 -m venv .opendrift && .opendrift/bin/pip install opendrift
 
 and this script runs its OpenDrift side there, as a subprocess (``--opendrift-python``): that
 side seeds ``--elements`` elements of one Leeway class at one point (on the equator, where a
@@ -36,7 +36,7 @@ import numpy as np
 import results_file
 
 RESULTS = Path(__file__).resolve().parent / "results" / "drift.md"
-OPENDRIFT_PYTHON = "/work/wt/od-venv/bin/python"
+OPENDRIFT_PYTHON = ".opendrift/bin/python"
 OBJECT_TYPE = {"PIW-1": 1}  # OBJECTPROP.DAT's row numbers
 
 
