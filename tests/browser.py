@@ -2,8 +2,10 @@
 
 Debian's ``chromium`` and ``chromium-driver`` (``.ci/run`` installs them): Selenium is pointed
 at both binaries, so its driver manager never runs and nothing is downloaded. The network is
-cut three ways: no proxy or DNS resolution reaches anything, and DevTools puts the page
-offline, so a page that needs the network fails its test.
+cut three ways: no proxy or DNS resolution reaches anything, and DevTools puts each loaded page
+offline, so a page that needs the network fails its test. Chromium 150 drops DevTools' network
+conditions at a navigation, so they are set again on every page ``open_page`` loads; the
+load itself is covered by the proxy and DNS cut (and the tests count its resource requests).
 """
 
 from __future__ import annotations
@@ -43,16 +45,22 @@ def chromium() -> Iterator[webdriver.Chrome]:
     driver = webdriver.Chrome(options=options, service=Service(str(CHROMEDRIVER)))
     try:
         driver.execute_cdp_cmd("Network.enable", {})
-        driver.execute_cdp_cmd("Network.emulateNetworkConditions", {
-            "offline": True, "latency": 0, "downloadThroughput": 0, "uploadThroughput": 0})
+        _offline(driver)
         yield driver
     finally:
         driver.quit()
         shutil.rmtree(profile, ignore_errors=True)
 
 
+def _offline(driver: webdriver.Chrome) -> None:
+    driver.execute_cdp_cmd("Network.emulateNetworkConditions", {
+        "offline": True, "latency": 0, "downloadThroughput": 0, "uploadThroughput": 0})
+
+
 def open_page(driver: webdriver.Chrome, page: Path) -> None:
-    """Load ``page`` from disk and wait until its script has drawn the first frame."""
+    """Load ``page`` from disk, put it offline, and wait until its script has drawn the first
+    frame."""
     driver.get(page.resolve().as_uri())
+    _offline(driver)
     WebDriverWait(driver, 30).until(
         lambda d: d.execute_script("return document.body.dataset.ready === 'true'"))
