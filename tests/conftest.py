@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import os
+import time
 
 import pytest
 from hypothesis import HealthCheck, settings
+from numba.core.event import Event, Listener
 
 settings.register_profile(  # derandomized: a commit's CI run draws the examples it drew here
     "sarlink", max_examples=25, deadline=None, derandomize=True,
@@ -71,3 +73,31 @@ def pytest_sessionstart(session: pytest.Session) -> None:
         for done in [pool.submit(warm_up, planner, "disc", ranges=ranges, relays=relays,
                                  chain=chain) for planner, ranges, relays, chain in KERNELS]:
             done.result()
+
+
+class _CompileLog(Listener):
+    """``SARLINK_COMPILE_LOG=path``: append a line per top-level Numba compile to ``path``
+    (worker, test, function, seconds), to see where a test run's compile time goes."""
+
+    def __init__(self, path: str) -> None:
+        super().__init__()
+        self.path, self.started = path, list[float]()
+
+    def on_start(self, event: Event) -> None:
+        self.started.append(time.perf_counter())
+
+    def on_end(self, event: Event) -> None:
+        seconds = time.perf_counter() - self.started.pop()
+        if self.started:  # a compile inside another's: counted in the outer one
+            return
+        name = getattr(event.data["dispatcher"].py_func, "__qualname__", "?")
+        test = os.environ.get("PYTEST_CURRENT_TEST", "session start").split(" ")[0]
+        with open(self.path, "a") as log:
+            log.write(f"{os.environ.get('PYTEST_XDIST_WORKER', 'main')}\t{test}\t{name}\t"
+                      f"{seconds:.1f}\n")
+
+
+if os.environ.get("SARLINK_COMPILE_LOG"):
+    from numba.core import event as _numba_event
+
+    _numba_event.register("numba:compile", _CompileLog(os.environ["SARLINK_COMPILE_LOG"]))
