@@ -155,7 +155,8 @@ def simulate(
     where = f"({result.target[0]:.0f}, {result.target[1]:.0f}) m"
     if "target_lonlat" in out:
         where += " = {:.5f}, {:.5f}".format(*out["target_lonlat"])
-    table.add_row("target last seen at" if walked is not None else "target at", where)
+    if result.targets is None:  # several: each one's row below
+        table.add_row("target last seen at" if walked is not None else "target at", where)
     if walked is not None:
         table.add_row("target moves", f"{mission.target.motion}, from "
                       f"{mission.target.delay:g} s before take-off")
@@ -169,7 +170,7 @@ def simulate(
                       "is found and the BS told")
         for j, (xy, td, tn) in enumerate(zip(out["targets"], out["t_detect_each"],
                                              out["t_notify_each"], strict=True)):
-            table.add_row(f"target {j + 1} at ({xy[0]:.0f}, {xy[1]:.0f}) m",
+            table.add_row(f"target {j + 1} last seen at ({xy[0]:.0f}, {xy[1]:.0f}) m",
                           ("not found" if td is None else f"found at {td:g} s")
                           + ("" if tn is None else f", BS told at {tn:g} s"))
     table.add_row("detected at", never if result.t_detect is None else
@@ -182,7 +183,8 @@ def simulate(
         table.add_row("target reachable", unrecorded)
         table.add_row("drones connected to BS", unrecorded)
     else:
-        table.add_row("target reachable", f"{out['t_reachable']:g} s "
+        table.add_row("target reachable" if result.targets is None else
+                      "target 1 reachable", f"{out['t_reachable']:g} s "
                       f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
         table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
     if out["depth_max"] is not None:

@@ -75,7 +75,7 @@ def event(times: np.ndarray, success: int) -> int:
 def settled(mode: np.ndarray, in_range: np.ndarray, known: np.ndarray, look: int) -> bool:
     """:func:`records.settled` for every target: every drone has landed, and none still looks
     for a target in its range that it does not know."""
-    for j in range(known.shape[0]):
+    for j in range(known.shape[0]):  # noqa: SIM110 (a loop Numba compiles; all() of a generator it does not)
         if not records.settled(mode, in_range[j], known[j], look):
             return False
     return True
