@@ -20,6 +20,7 @@ from sarlink.cli import app
 from sarlink.config import mission_hash
 from sarlink.engine import many
 from sarlink.engine.codes import SUCCESS_CODES
+from sarlink.metrics import summarize
 from sarlink.simulation import prepare
 from sarlink.storage import run_table
 
@@ -95,15 +96,21 @@ def test_one_target_flies_the_runs_of_before() -> None:
 
 def test_the_first_target_is_the_one_target_of_the_mission() -> None:
     """With sure looks and CovB (which flies the same whoever knows what), target 1 of three
-    is found and reported when the one target of the same run is: the others' draws come from
-    a stream of their own."""
-    one = Mission.build(planner="covb", drones=4, horizon=600.0)
+    walks as the one walking target of the same run does, and is found and reported when it
+    is: the others' draws come from a stream of their own."""
+    one = Mission.build(planner="covb", drones=4, horizon=600.0, motion="walk", delay=60.0,
+                        walk_speed=2.0)
     three = one.replace(count=3)
     for run in range(4):
-        a, b = simulate(one, seed=5, run=run), simulate(three, seed=5, run=run)
+        a = simulate(one, seed=5, run=run, trajectory=True)
+        b = simulate(three, seed=5, run=run, trajectory=True)
         assert b.targets is not None and b.t_detect_each is not None
         assert b.t_notify_each is not None
         assert tuple(b.targets[0]) == a.target
+        assert a.trajectory is not None and b.trajectory is not None
+        assert a.trajectory.target is not None and b.trajectory.target is not None
+        assert (b.trajectory.target[:, 0] == a.trajectory.target[:, 0]).all()
+        assert (b.trajectory.positions == a.trajectory.positions).all()
         assert _times(b.t_detect_each[:1]) == [a.t_detect]
         assert _times(b.t_notify_each[:1]) == [a.t_notify]
 
@@ -147,16 +154,25 @@ def test_the_kernels_choice_of_event_is_the_references(times: list[float | None]
     assert (None if kernel < 0 else kernel) == mission_event(times, success)
 
 
-def test_several_targets_are_stored_per_target() -> None:
-    """A run table of K = 3 keeps each target's position and events as list columns."""
+def test_several_targets_are_stored_and_summarized_per_target() -> None:
+    """A run table of K = 3 keeps each target's position and events as list columns, and
+    summarize counts the targets found and told within each t_d from them."""
     mission = Mission.build(planner="covb", drones=4, horizon=600.0, count=3)
-    results = [simulate(mission, seed=1, run=k) for k in range(3)]
-    table = run_table(mission, 1, results).to_pydict()
+    results = [simulate(mission, seed=1, run=k) for k in range(4)]
+    table = run_table(mission, 1, results)
+    columns = table.to_pydict()
     for k, r in enumerate(results):
         assert r.targets is not None and r.t_detect_each is not None
-        assert table["target_x_each"][k] == r.targets[:, 0].tolist()
-        got = table["t_detect_each"][k]
+        assert columns["target_x_each"][k] == r.targets[:, 0].tolist()
+        got = columns["t_detect_each"][k]
         assert [None if math.isnan(v) else v for v in got] == _times(r.t_detect_each)
+    for td in (150.0, 600.0):
+        row = summarize(table.to_pandas(), td=td, by=[]).iloc[0]
+        assert row["found"] == pytest.approx(np.mean([r.found(td) for r in results]))
+        assert row["told"] == pytest.approx(np.mean([r.told(td) for r in results]))
+    one = Mission.build(planner="covb", drones=4, horizon=600.0)
+    plain = run_table(one, 1, [simulate(one, seed=1, run=0)]).to_pandas()
+    assert "found" not in summarize(plain, by=[]).columns
 
 
 @pytest.mark.parametrize(("params", "expected"), [
