@@ -205,3 +205,32 @@ def test_the_cli_flies_several_walking_targets_and_refuses_none() -> None:
     assert bad.exit_code != 0
     lines = [line for line in bad.output.splitlines() if line.strip()]
     assert len(lines) == 1 and "target.count" in lines[0] and "(got 0)" in lines[0], bad.output
+
+
+def test_replays_and_plots_draw_every_target(tmp_path) -> None:
+    """Three walking targets: the replay's frames hold every track (float32) and decode to
+    them, its scene names where the others were last seen and when each was found, and
+    ``--plot``'s figure draws the others."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from sarlink.playback import replay
+    from sarlink.playback.encoding import decode, encode
+    from sarlink.playback.scene import scene
+    from sarlink.plots.run import plot_run
+
+    mission = Mission.build(planner="covb", drones=4, horizon=600.0, motion="walk",
+                            delay=60.0, walk_speed=2.0, count=3)
+    result = simulate(mission, seed=5, run=1, trajectory=True)
+    traj = result.trajectory
+    assert traj is not None and traj.target is not None and traj.target.shape[1] == 3
+    back = decode(encode(traj)).target
+    assert back is not None and back.shape == traj.target.shape
+    np.testing.assert_allclose(back, traj.target, rtol=1e-6, atol=1e-3)
+    panel = scene(result, mission)
+    assert result.targets is not None and result.t_detect_each is not None
+    assert panel["others"] == result.targets[1:].tolist()
+    assert panel["othersDetect"] == _times(result.t_detect_each[1:])
+    replay(result, mission).write(tmp_path / "three.html")
+    labels = plot_run(result, mission).get_legend_handles_labels()[1]
+    assert "the other targets" in labels
