@@ -151,8 +151,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     routed = np.zeros(nw, dtype=np.uint64)  # nodes with a route to the BS
     spread = np.zeros(nw, dtype=np.uint64)  # nodes that know the target's location
     stack = np.empty(m, dtype=np.int64)
-    if MANY_TARGETS:
-        scratch = np.zeros(nw, dtype=np.uint64)  # one target's knowers
+    if MANY_TARGETS:  # the components a location floods over (many.flood)
+        comp, reached = np.empty(n + 1, dtype=np.int64), np.zeros(n + 1, dtype=np.bool_)
+        unseen = np.zeros(nw, dtype=np.uint64)
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
     deciding = np.zeros(n, dtype=np.bool_)
     leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
@@ -236,8 +237,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if not (scanning or p.trace):  # a traced flight is scanned afterwards (critical_ranges)
             graph.bs_component(adj, n, routed, stack)
             if MANY_TARGETS:
-                many.flood(adj, routed, known, t_det_each, t_not_each, t, knows, spread,
-                           scratch, stack)
+                many.flood(adj, known, t_det_each, t_not_each, t, knows, spread, comp,
+                           reached, unseen, stack)
                 jn = many.event(t_not_each, p.success)
                 if t_not < 0.0 and jn >= 0:
                     t_not = t_not_each[jn]

@@ -18,16 +18,7 @@ def sense(px: np.ndarray, py: np.ndarray, k: int, p: Params, in_range: np.ndarra
     knows the target's location from then on. The target is node ``N + 1`` of ``px, py``.
     """
     n = knows.shape[0]
-    return sense_at(px[n + 1], py[n + 1], px, py, k, p, in_range, pass_start, knows, rng)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def sense_at(tx: float, ty: float, px: np.ndarray, py: np.ndarray, k: int, p: Params,
-             in_range: np.ndarray, pass_start: np.ndarray, knows: np.ndarray,
-             rng: np.random.Generator) -> int:
-    """:func:`sense` for a target at ``(tx, ty)``: one of several (``target.count > 1``)
-    has its own ``in_range``, ``pass_start`` and ``knows`` rows."""
-    n = knows.shape[0]
+    tx, ty = px[n + 1], py[n + 1]
     r2 = p.r * p.r
     first = -1
     for i in range(n):
