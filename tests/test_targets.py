@@ -234,3 +234,15 @@ def test_replays_and_plots_draw_every_target(tmp_path) -> None:
     replay(result, mission).write(tmp_path / "three.html")
     labels = plot_run(result, mission).get_legend_handles_labels()[1]
     assert "the other targets" in labels
+
+
+def test_a_design_for_several_targets_tries_drones_that_continue() -> None:
+    """``sarlink design`` with several targets: the default options leave out reporting
+    (refused with several); one target keeps both."""
+    from sarlink.design.request import DesignRequest
+
+    three = Mission.build(count=3)
+    request = DesignRequest.from_dict({"mission": three, "td": 1800.0, "ps": 0.9})
+    assert request.options == {"on_detect": ["continue"]}
+    one = DesignRequest.from_dict({"mission": Mission(), "td": 1800.0, "ps": 0.9})
+    assert one.options == {"on_detect": ["continue", "report"]}
