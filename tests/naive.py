@@ -33,6 +33,11 @@ headings drawn again until a step stays in the square, and its walk during ``tar
 before take-off; it moves after the drones, so each step senses it where it is then. A
 drifting target (``drift``) drifts here from the same text: its Leeway fit drawn once, the
 wind and current read from their tables at the step's start, the jibe after the step.
+
+Several targets (``target.count = K``, docs/model.md, Several targets): the first drawn as
+one target is, the others from the run's targets stream (in order), each sensed, flooded and
+notified on its own, each moving after the first by draws from the targets stream; the
+mission's events are the first or the last of theirs, by ``target.success``.
 """
 
 from __future__ import annotations
@@ -72,6 +77,25 @@ class NaiveResult:
     energy: list[float] | None = None
     target_track: list[tuple[float, float]] | None = None
     """A walking target's position at every recorded step."""
+    detector: int = -1
+    t_detect_each: list[float | None] | None = None
+    """Several targets: each one's first detection, notification and detector."""
+    t_notify_each: list[float | None] | None = None
+    detector_each: list[int] | None = None
+    targets: list[tuple[float, float]] | None = None
+    """Several targets: where each was last seen."""
+    tracks: list[list[tuple[float, float]]] | None = None
+    """Several moving targets: every target's position at every recorded step."""
+
+
+def mission_event(times: list[float | None], success: str) -> int | None:
+    """The target whose time is the mission's: the earliest (``first``), or the latest once
+    all have one (``all``); the lowest index among ties; None if there is none yet."""
+    happened = [j for j, x in enumerate(times) if x is not None]
+    if not happened or (success == "all" and len(happened) < len(times)):
+        return None
+    best = (min if success == "first" else max)(times[j] for j in happened)  # type: ignore
+    return next(j for j in happened if times[j] == best)
 
 
 def _dist(p: tuple[float, float], q: tuple[float, float]) -> float:
@@ -221,6 +245,10 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     streams = run_streams(seed, run)
     target = (streams.scenario.random() * a, streams.scenario.random() * a)
     offset = streams.scenario.random() * 2 * math.pi
+    count = mission.target.count
+    others = [(streams.targets.random() * a, streams.targets.random() * a)
+              for _ in range(count - 1)]
+    seen = [target, *others]
     BS, TG = n, n + 1
     motion = MOVERS.get(mission.target.motion)
     mover = motion(mission, streams.target) if motion else None
@@ -228,7 +256,11 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     for j in range(delay):
         assert mover is not None
         target = mover.move(target, j * dt, dt)
+    movers = [motion(mission, streams.targets) for _ in others] if motion else []
+    for j in range(delay):
+        others = [m.move(o, j * dt, dt) for m, o in zip(movers, others, strict=True)]
     track = []
+    tracks = []
 
     pos = [bs] * n
     free = [i for i in range(searchers) if not route[i]]  # the drones the rule steers
@@ -252,9 +284,13 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     points = list(pos)  # the point the BS last planned for each relay
     # x, y, heading, step, next waypoint and mode of each drone when the BS last heard it
     heard: list[tuple[float, float, float, int, int, str]] = []
-    knows = [False] * n
-    in_range = [False] * n
-    pass_start = [0.0] * n
+    knows_each = [[False] * n for _ in range(count)]  # who knows where each target is
+    knows = knows_each[0]  # one target: the same list
+    in_range = [[False] * n for _ in range(count)]
+    pass_start = [[0.0] * n for _ in range(count)]
+    t_det_each: list[float | None] = [None] * count
+    t_not_each: list[float | None] = [None] * count
+    det_each = [-1] * count
     shadow: dict[tuple[int, int], float] = {}
     z: dict[tuple[int, int], float] = {}  # correlated shadowing's normal state per link
     t_det: float | None = None
@@ -599,30 +635,41 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
             for i in range(n + 2):
                 for j in range(i + 1, n + 2):
                     shadow[(i, j)] = mission.channel.sigma * streams.shadow.standard_normal()
-        for i in range(n):
-            now_in = _within(pos[i], target, r)
-            if now_in:
-                look = not in_range[i]
-                if look:
-                    pass_start[i] = t
-                elif mission.sensing.look == "per-period" and round((t - pass_start[i]) / dt) % \
-                        round(ts / dt) == 0:
-                    look = True
-                if look and streams.look.random() >= mission.sensing.p_miss:
-                    knows[i] = True
-                    if t_det is None:
-                        t_det, detector = t, i
-            in_range[i] = now_in
+        for j, where in enumerate([target, *others]):  # target by target, drone by drone
+            for i in range(n):
+                now_in = _within(pos[i], where, r)
+                if now_in:
+                    look = not in_range[j][i]
+                    if look:
+                        pass_start[j][i] = t
+                    elif mission.sensing.look == "per-period" and \
+                            round((t - pass_start[j][i]) / dt) % round(ts / dt) == 0:
+                        look = True
+                    if look and streams.look.random() >= mission.sensing.p_miss:
+                        knows_each[j][i] = True
+                        if t_det_each[j] is None:
+                            t_det_each[j], det_each[j] = t, i
+                in_range[j][i] = now_in
+        jd = mission_event(t_det_each, mission.target.success)
+        if t_det is None and jd is not None:
+            t_det, detector = t_det_each[jd], det_each[jd]
         links = link_graph(pos, faded=True)
         routed = component({BS}, links, blocked=TG)
-        informed = component({i for i in range(n) if knows[i]}, links, blocked=TG)
-        for i in informed - {BS}:
-            knows[i] = True
-        if t_not is None and BS in informed:
-            t_not = t
+        for j in range(count):
+            informed = component({i for i in range(n) if knows_each[j][i]}, links, blocked=TG)
+            for i in informed - {BS}:
+                knows_each[j][i] = True
+            if t_not_each[j] is None and BS in informed:
+                t_not_each[j] = t
+        jn = mission_event(t_not_each, mission.target.success)
+        if t_not is None and jn is not None:
+            t_not = t_not_each[jn]
+        if count > 1:  # what the drones know: any target's location
+            knows = [any(row[i] for row in knows_each) for i in range(n)]
         if record:
             positions.append(list(pos))
             track.append(target)
+            tracks.append([target, *others])
         if k in checkpoints:
             matrix = [[j in links[i] for j in range(n + 2)] for i in range(n + 2)]
             base = [readings.parked == "base" and mo == "landed" for mo in mode]
@@ -751,13 +798,21 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                     drawn += descent if mode[i] == "landed" else 0.0
                     energy[i] -= drawn
                     used[i] += drawn
-        if mover is not None:  # the target moves last
+        if mover is not None:  # the target moves last, the others after it
             target = mover.move(target, (delay + k) * dt, dt)
+            others = [m.move(o, (delay + k) * dt, dt) for m, o in zip(movers, others,
+                                                                      strict=True)]
 
     immediate = t_not is not None and t_not == t_det
+    several = count > 1
     return NaiveResult(t_det, t_not, immediate, reach_time, conn_time, positions, depth,
                        farthest, *((sorties, ground_time, used) if battery else (None,) * 3),
-                       target_track=track if mover else None)
+                       target_track=track if mover else None, detector=detector,
+                       t_detect_each=t_det_each if several else None,
+                       t_notify_each=t_not_each if several else None,
+                       detector_each=det_each if several else None,
+                       targets=seen if several else None,
+                       tracks=tracks if mover and several else None)
 
 
 @dataclass

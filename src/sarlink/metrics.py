@@ -113,6 +113,8 @@ MEASURES = {m.column: m for m in (
     Measure("connected", "drones connected", False),
     Measure("depth", "depth of the BS's network", False, "hops", digits=2),
     Measure("farthest", "farthest connected drone", False, "m", digits=0),
+    Measure("found", "targets found", False, digits=2),
+    Measure("told", "targets the BS was told of", False, digits=2),
 )}
 """The measures of :func:`summarize`, by column."""
 
@@ -257,6 +259,21 @@ def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np
     for name in ("depth", "farthest"):
         mean, dev, _ = sums.mean(_snapshot_at(df, name, td), everyone)
         out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
+    if "t_detect_each" in df:  # several targets in some runs: how many were found and told
+        for name, each, one in (("found", "t_detect_each", t_det),
+                                ("told", "t_notify_each", t_not)):
+            mean, dev, _ = sums.mean(_per_target_count(df[each], one, td), everyone)
+            out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
+    return out
+
+
+def _per_target_count(each: pd.Series, one: np.ndarray, td: np.ndarray) -> np.ndarray:
+    """How many targets' times of ``each`` (a list per run; None in a run of one target,
+    whose time is ``one``) are at most each run's ``td``."""
+    out = (one <= td).astype(float)
+    for k, times in enumerate(each.to_list()):
+        if times is not None and not (np.isscalar(times) and pd.isna(times)):
+            out[k] = np.count_nonzero(np.asarray(times, dtype=float) <= td[k])
     return out
 
 
@@ -284,6 +301,8 @@ def summarize(df: pd.DataFrame, td: float | Sequence[float] | None = None,
     - ``search_share``: their mean ``t_detect`` over their mean ``t_notify``;
     - ``reachability``: mean fraction of ``[0, t_d]`` in which the target had a route to the BS;
     - ``connected``: mean fraction of drones with a route to the BS over ``[0, t_d]``;
+    - ``found``, ``told`` (only if some runs have several targets): the mean number of targets
+        detected, and of those the BS was told of, within ``t_d``;
     - ``depth``, ``farthest``: the BS's network at ``t_d`` (the last checkpoint at or before
         it), averaged over the runs: the most hops from the BS to an airborne drone with a
         route, and the distance from the BS of the farthest such drone, m;

@@ -29,8 +29,8 @@ class Trajectory:
     """(steps, N + 2, N + 2) whether two nodes are linked (drones ``0 .. N-1``, the BS ``N``,
     the target ``N + 1``), as the links were at that step (with shadowing, as drawn)"""
     target: np.ndarray | None = None
-    """(steps, 1, 2) metres: a moving target's position at every step (None: the target
-    stands still at :attr:`RunResult.target`)"""
+    """(steps, K, 2) metres: every moving target's position at every step (None: the targets
+    stand still at :attr:`RunResult.target` and :attr:`RunResult.targets`)"""
 
 
 @dataclass(frozen=True)
@@ -72,6 +72,17 @@ class RunResult:
     """Each drone's time on the ground for battery swaps, s; None without a battery."""
     energy: np.ndarray | None = None
     """Each drone's energy drawn, J (climbs and descents included); None without a battery."""
+    targets: np.ndarray | None = None
+    """Several targets (``target.count = K > 1``): every target's last-seen position,
+    ``(K, 2)`` m, the first at :attr:`target`; None with one target. ``t_detect``,
+    ``t_notify``, ``immediate`` and ``detector`` are then the mission's, by
+    ``target.success``, and the reachability records follow the first target."""
+    t_detect_each: np.ndarray | None = None
+    """Several targets: each one's first detection, s (NaN: never); None with one."""
+    t_notify_each: np.ndarray | None = None
+    """Several targets: when the BS first knew where each one is, s (NaN: never)."""
+    detector_each: np.ndarray | None = None
+    """Several targets: each one's first detector (-1: none)."""
 
     @property
     def horizon(self) -> float:
@@ -91,6 +102,18 @@ class RunResult:
     def notified(self, td: float | None = None) -> bool:
         """Mission success: the BS was notified by ``t_d`` (Eq. 1)."""
         return self.t_notify is not None and self.t_notify <= self._upto(td)
+
+    def found(self, td: float | None = None) -> int:
+        """How many targets were detected by ``t_d`` (one target: 0 or 1)."""
+        if self.t_detect_each is None:
+            return int(self.detected(td))
+        return int((self.t_detect_each <= self._upto(td)).sum())
+
+    def told(self, td: float | None = None) -> int:
+        """How many targets the BS had been told of by ``t_d`` (one target: 0 or 1)."""
+        if self.t_notify_each is None:
+            return int(self.notified(td))
+        return int((self.t_notify_each <= self._upto(td)).sum())
 
     def t_reachable(self, td: float | None = None) -> float:
         """Seconds of ``[0, t_d]`` during which the target had a route to the BS."""
@@ -154,4 +177,9 @@ def result_columns(results: Sequence[RunResult]) -> dict[str, Any]:
         values = [getattr(r, name) for r in results]
         if all(v is not None for v in values):
             columns[name] = values
+    if all(r.targets is not None for r in results):  # several targets, per target
+        columns["target_x_each"] = [r.targets[:, 0] for r in results]  # type: ignore[index]
+        columns["target_y_each"] = [r.targets[:, 1] for r in results]  # type: ignore[index]
+        for name in ("t_detect_each", "t_notify_each", "detector_each"):
+            columns[name] = [np.asarray(getattr(r, name), dtype=float) for r in results]
     return columns

@@ -164,6 +164,12 @@ FLAGS: tuple[Flag, ...] = _rows(
      {*ONE_RUN, "design"}),
     ("--altitude", float, "flight altitude, m: the links' height, and the climb and descent "
      "of every sortie on a battery", "altitude", {*ONE_RUN, "design"}),
+    ("--targets", int, "how many targets, each drawn from the prior and moving by the "
+     "same model, independently (docs/model.md, Several targets)", "count",
+     {*ONE_RUN, "design"}),
+    ("--success", str, "with several targets, the mission's success: all (every target "
+     "found and the BS told of each) or first (the first of them)", "success",
+     {*ONE_RUN, "design"}),
     ("--target-motion", str, "how the target moves: "
      f"{', '.join(target_motion_names())} (docs/model.md, Target motion)", "motion", ONE_RUN),
     ("--delay", float, "seconds from the last sighting to take-off, in which the target "

@@ -51,6 +51,30 @@ def _when(times: np.ndarray, values: np.ndarray, text: str) -> str:
     return f"{text}, first at {times[int(np.nanargmax(values))]:g} s"
 
 
+def _each_target(result: RunResult, mission: Mission) -> dict[str, Any]:
+    """The JSON fields of a run with several targets (``target.count > 1``)."""
+    assert result.targets is not None and result.t_detect_each is not None
+    assert result.t_notify_each is not None and result.detector_each is not None
+
+    def times(values: np.ndarray) -> list[float | None]:
+        return [None if math.isnan(v) else float(v) for v in values.tolist()]
+
+    out: dict[str, Any] = {
+        "success": mission.target.success,
+        "targets": [[round(float(x), 1), round(float(y), 1)] for x, y in result.targets],
+        "t_detect_each": times(result.t_detect_each),
+        "t_notify_each": times(result.t_notify_each),
+        "detector_each": [None if d < 0 else int(d) for d in result.detector_each.tolist()],
+        "found": result.found(),
+        "notified": result.told(),
+    }
+    traj = result.trajectory
+    if traj is not None and traj.target is not None:  # where each one was at the end
+        out["targets_at_end"] = [[round(float(x), 1), round(float(y), 1)]
+                                 for x, y in traj.target[-1]]
+    return out
+
+
 @mission_flags("simulate")
 def simulate(
     flags: MissionFlags,
@@ -94,8 +118,12 @@ def simulate(
         "depth_max": _finite_or_none(float(np.nanmax(result.depth, initial=-np.inf))),
         "farthest_max": _finite_or_none(float(np.nanmax(result.farthest, initial=-np.inf))),
     }
+    if result.targets is not None:  # several targets: each one's position and events
+        out.update(_each_target(result, mission))
     traj = result.trajectory
-    walked = None if traj is None or traj.target is None else traj.target[:, 0, :]
+    # one moving target: where it was when found (several: each one's events above)
+    walked = None if traj is None or traj.target is None or result.targets is not None \
+        else traj.target[:, 0, :]
     if traj is not None and walked is not None:  # a moving target: where it was when found
         out["target_motion"] = mission.target.motion
         out["target_delay"] = mission.target.delay
@@ -127,7 +155,8 @@ def simulate(
     where = f"({result.target[0]:.0f}, {result.target[1]:.0f}) m"
     if "target_lonlat" in out:
         where += " = {:.5f}, {:.5f}".format(*out["target_lonlat"])
-    table.add_row("target last seen at" if walked is not None else "target at", where)
+    if result.targets is None:  # several: each one's row below
+        table.add_row("target last seen at" if walked is not None else "target at", where)
     if walked is not None:
         table.add_row("target moves", f"{mission.target.motion}, from "
                       f"{mission.target.delay:g} s before take-off")
@@ -135,6 +164,15 @@ def simulate(
             table.add_row("target when detected", "({:.0f}, {:.0f}) m".format(
                 *out["target_at_detection"]))
         table.add_row("target at the end", "({:.0f}, {:.0f}) m".format(*out["target_at_end"]))
+    if "t_detect_each" in out:
+        table.add_row("targets", f"{mission.target.count}, success when "
+                      f"{'every one' if mission.target.success == 'all' else 'the first'} "
+                      "is found and the BS told")
+        for j, (xy, td, tn) in enumerate(zip(out["targets"], out["t_detect_each"],
+                                             out["t_notify_each"], strict=True)):
+            table.add_row(f"target {j + 1} last seen at ({xy[0]:.0f}, {xy[1]:.0f}) m",
+                          ("not found" if td is None else f"found at {td:g} s")
+                          + ("" if tn is None else f", BS told at {tn:g} s"))
     table.add_row("detected at", never if result.t_detect is None else
                   f"{result.t_detect:g} s by drone {result.detector}")
     table.add_row("BS notified at", never if result.t_notify is None else f"{result.t_notify:g} s")
@@ -145,7 +183,8 @@ def simulate(
         table.add_row("target reachable", unrecorded)
         table.add_row("drones connected to BS", unrecorded)
     else:
-        table.add_row("target reachable", f"{out['t_reachable']:g} s "
+        table.add_row("target reachable" if result.targets is None else
+                      "target 1 reachable", f"{out['t_reachable']:g} s "
                       f"({out['t_reachable'] / mission.timing.horizon:.1%} of t_d)")
         table.add_row("drones connected to BS", f"{out['connected_fraction']:.1%} on average")
     if out["depth_max"] is not None:

@@ -29,6 +29,8 @@ _MEASURES: list[tuple[str, str]] = [
 ]
 """Row label and column of each measure printed, formatted as :data:`sarlink.metrics.MEASURES`
 says."""
+_EACH = [("targets found", "found"), ("targets the BS was told of", "told")]
+"""The rows added when some runs have several targets (``target.count > 1``)."""
 
 
 def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
@@ -43,7 +45,7 @@ def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
         out.add_column("measure")
         for td in rows["td"]:
             out.add_column(f"t_d = {td:g} s", justify="right")
-        for label, column in _MEASURES:
+        for label, column in _MEASURES + (_EACH if "found" in rows else []):
             measure = MEASURES[column]
             out.add_row(label, *(measure.text(row) for _, row in rows.iterrows()))
         console.print(out)

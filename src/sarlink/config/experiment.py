@@ -41,8 +41,9 @@ ADDED_LATER: dict[str, dict[str, Any]] = {
     "readings": EARLIER_CHOICES,
     "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0,
                 "spares": None},
-    "target": {"motion": "still", "delay": 0.0, "walk_speed": 0.5, "walk_turn": 0.5,
-               "walk_mobile": 14400.0, "walk_spread": 1.0, "drift_object": "PIW-1",
+    "target": {"count": 1, "success": "all", "motion": "still", "delay": 0.0,
+               "walk_speed": 0.5, "walk_turn": 0.5, "walk_mobile": 14400.0, "walk_spread": 1.0,
+               "drift_object": "PIW-1",
                "drift_wind": [[0.0, 0.0, 0.0]], "drift_current": [[0.0, 0.0, 0.0]]},
 }
 """Parameters added after results were first stored, with the value that keeps the earlier

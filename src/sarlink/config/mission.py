@@ -283,11 +283,22 @@ class Battery(Checked):
         "A drone that lands for a swap when none is left stays parked")
 
 
+MAX_TARGETS = 1000
+"""Most targets in one mission: each is a row of the kernel's per-target state."""
+
+
 class Target(Checked):
     """The target and how it moves (beyond the paper, whose target stays where it is drawn;
     docs/model.md, Target motion). The prior (uniform, or ``region.zones``) is where it was
     last seen; it moves from there for ``delay`` seconds before take-off, then on."""
 
+    count: int = Field(
+        1, ge=1, le=MAX_TARGETS, strict=True,
+        description="how many targets, each drawn from the prior and moving by the same model, "
+        "independently (1: the paper's one target)")
+    success: Literal["all", "first"] = Field(
+        "all", description="with several targets, what counts as found and notified: all, "
+        "every target detected and the BS told of each; first, the first of them")
     motion: str = Field(
         "still", min_length=1,
         description="how the target moves, by name (sarlink.engine.target_motion."
@@ -431,6 +442,10 @@ class Mission(Checked):
             raise ValueError(f"timing.horizon / timing.checkpoint must be at most "
                              f"{MAX_RECORDS:,} records, got {t.horizon:g} s / {t.checkpoint:g} s "
                              f"= {records:,.0f}")
+        if self.target.count > 1 and self.team.on_detect != "continue":
+            raise ValueError(f"team.on_detect = {self.team.on_detect!r} follows one target; with "
+                             f"target.count = {self.target.count} it must be 'continue' "
+                             "(docs/model.md, Several targets)")
         delay = self.target.delay
         if delay > 0 and not _multiple_of(delay, t.dt):
             raise ValueError(f"target.delay must be a multiple of timing.dt = {t.dt} s, got "

@@ -136,6 +136,8 @@ def _range_free(request: DesignRequest, planner: str, drones: int) -> bool:
     """Whether the team flies the same at every range; asked of the steering (an mTSP plan)
     only where the planner's kind leaves it open (a hybrid whose rule reads the links)."""
     mission = _mission(request, planner, drones)
+    if mission.target.count > 1:  # several targets: flown at each range (Prepared.range_free)
+        return False
     rule = get_planner(planner).rule
     if rule is None or rule.range_free:
         return bool(get_radio(mission.radio).range_free)

@@ -39,7 +39,8 @@ class DesignRequest(Checked):
         default_factory=lambda: {"on_detect": ["continue", "report"]},
         description="extra flat mission parameters -> values; every planner is also tried "
         "with each combination; default: with and without drones that report "
-        "(on_detect = continue, report)")
+        "(on_detect = continue, report; continue alone with several targets, as reporting "
+        "follows one)")
     max_drones: int = Field(22, ge=1, le=1000, description="largest team considered")
     min_drones: int = Field(1, ge=1, le=1000, description="smallest team considered; equal to "
                             "max_drones: that team alone (with split: its best split)")
@@ -62,6 +63,22 @@ class DesignRequest(Checked):
     every_planner: bool = Field(False, description="answer for every planner (its smallest "
                                 "team and setting); else the recommendation alone, for which "
                                 "no team larger than the smallest one proven gets runs")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _several_targets_continue(cls, data: Any) -> Any:
+        """With several targets (``target.count > 1``) drones do not report (docs/model.md,
+        Several targets): the default options are ``on_detect = continue`` alone."""
+        if not isinstance(data, dict) or "options" in data:
+            return data
+        mission = data.get("mission")
+        if isinstance(mission, Mission):
+            count = mission.target.count
+        else:
+            count = ((mission or {}).get("target") or {}).get("count", 1)
+        if isinstance(count, int) and count > 1:
+            return {**data, "options": {"on_detect": ["continue"]}}
+        return data
 
     @field_validator("planners")
     @classmethod

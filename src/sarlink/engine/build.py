@@ -68,14 +68,16 @@ def _hook_lines(alias: str, fn: Callable[..., Any]) -> list[str]:
 def plugin_block(rule: DistributedRule | None, radio: RadioModel,
                  relays: RelayStrategy | None = None, *, scans_ranges: bool = True,
                  chain: bool = False, energy: bool = False,
-                 target: TargetMotion | None = None) -> str:
+                 target: TargetMotion | None = None, many: bool = False) -> str:
     """The template's plug-in block for ``rule`` (``None``: a team of routes only), ``radio``
     and ``relays`` (``None``: a team without relays, ``RELAYS = False``); ``target``: the
     target's motion model (``None`` or one that does not move: a still target,
     ``TARGET_MOVES = False``, else that code is not compiled); ``chain``: the team
     forms a chain to a found target (``on_detect = relay``, ``CHAIN``; else that code is not
     compiled); ``energy``: its drones fly on batteries (``ENERGY``,
-    :mod:`sarlink.engine.endurance`; else that code is not compiled). The range scan
+    :mod:`sarlink.engine.endurance`; else that code is not compiled); ``many``: several
+    targets (``MANY_TARGETS``, :mod:`sarlink.engine.many`; else that code is not compiled, and
+    one target's kernel is the one of before). The range scan
     (:mod:`sarlink.engine.critical_ranges`, inlined: most of a kernel's compile time after the
     rule) is compiled only into a kernel whose team may fly the same at every range (no relays
     and no chain: their points depend on the range), and if ``scans_ranges``."""
@@ -98,7 +100,7 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel,
                   f"    return {radio.static}", ""]
     moves = target is not None and target.moves
     range_free = (radio.range_free and (rule is None or rule.range_free) and relays is None
-                  and not chain and not energy and not moves)
+                  and not chain and not energy and not moves and not many)
     lines += [f"RELAYS = {relays is not None}",
               f"CHAIN = {chain}",
               f"ENERGY = {energy}",
@@ -107,6 +109,7 @@ def plugin_block(rule: DistributedRule | None, radio: RadioModel,
               f"SCANS_RANGES = {scans_ranges and range_free}",
               f"TARGET_MOVES = {moves}",
               f"TARGET_STATE = {target.state if moves and target else 0}",
+              f"MANY_TARGETS = {many}",
               "# ---- end of plug-ins ----", ""]
     return "\n".join(lines)
 
@@ -131,11 +134,11 @@ def stepping_source(text: str) -> str:
 def kernel_source(rule: DistributedRule | None, radio: RadioModel,
                   relays: RelayStrategy | None = None, *, cache: bool = True,
                   stepping: bool = False, chain: bool = False, energy: bool = False,
-                  target: TargetMotion | None = None) -> str:
+                  target: TargetMotion | None = None, many: bool = False) -> str:
     """The text of the kernel module for ``rule``, ``radio``, ``relays``, ``chain``,
-    ``energy`` and ``target`` (its stepping form if ``stepping``)."""
+    ``energy``, ``target`` and ``many`` (its stepping form if ``stepping``)."""
     block = plugin_block(rule, radio, relays, scans_ranges=not stepping,  # an env never scans
-                         chain=chain, energy=energy, target=target)
+                         chain=chain, energy=energy, target=target, many=many)
     text = _BLOCK.sub(lambda _: block, Path(template.__file__).read_text(), count=1)
     if stepping:
         text = stepping_source(text)
@@ -215,11 +218,11 @@ def _slug(name: str) -> str:
 def kernel_for(rule: DistributedRule | None, radio: RadioModel,
                relays: RelayStrategy | None = None, *, cache: bool = True,
                stepping: bool = False, chain: bool = False, energy: bool = False,
-               target: TargetMotion | None = None) -> Callable[..., Any]:
+               target: TargetMotion | None = None, many: bool = False) -> Callable[..., Any]:
     """``simulate_kernel`` compiled for ``rule``, ``radio`` and ``relays`` (``None``: a team
     without relays), with the chain to a found target if ``chain`` (``on_detect = relay``)
-    with batteries if ``energy`` and with the target's motion if ``target`` moves (lazily, on
-    the first call).
+    with batteries if ``energy``, with the target's motion if ``target`` moves and with
+    several targets if ``many`` (lazily, on the first call).
 
     ``cache=False`` compiles a private copy without Numba's disk cache (for paired timing).
     ``stepping=True`` gives the stepping form (:func:`stepping_source`): a generator of the
@@ -230,18 +233,19 @@ def kernel_for(rule: DistributedRule | None, radio: RadioModel,
     # disc and shadowing share a kernel
     if target is not None and not target.moves:
         target = None  # a still target: the kernel without the seam
-    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy, target)
+    key = (rule, radio_identity(radio), relays, cache, stepping, chain, energy, target, many)
     if key not in _MEMO:
         if stepping and rule is not None:
             rule = dataclasses.replace(rule, decide=none.decide)
         text = kernel_source(rule, radio, relays, cache=cache, stepping=stepping, chain=chain,
-                             energy=energy, target=target)
+                             energy=energy, target=target, many=many)
         digest = kernel_digest(rule, radio, text, relays, target)
         form = "_steps" if stepping else ""
         relayed = f"_relays_{_slug(relays.name)}" if relays else ""
         chained = "_chain" if chain else ""
         chained += "_energy" if energy else ""
         chained += f"_target_{_slug(target.name)}" if target else ""
+        chained += "_many" if many else ""
         name = (f"sarlink_kernel_{_slug(rule.name) if rule else 'routes'}{relayed}{chained}"
                 f"{form}_{digest}")
         if cache:

@@ -36,6 +36,16 @@ class Stop(IntEnum):
 STOP_CODES = {"horizon": Stop.HORIZON, "detected": Stop.DETECTED, "notified": Stop.NOTIFIED}
 
 
+class Success(IntEnum):
+    """With several targets (``target.success``), whose events are the mission's."""
+
+    ALL = 0  # every target: the last detection, the last notification
+    FIRST = 1  # the first detection, the first notification
+
+
+SUCCESS_CODES = {"all": Success.ALL, "first": Success.FIRST}
+
+
 class OnDetect(IntEnum):
     """What a drone does once it knows the target's location (``report``: while the BS does
     not; ``relay``: for good)."""

@@ -6,7 +6,7 @@ never validates: :mod:`sarlink.engine.run` builds its inputs from a checked miss
 
 Each step at ``t = k dt`` observes (sense, links, flooding, records), decides (who turns home
 or updates, the team's rule, the boundary rule) and moves. Node indices: drones ``0 .. N-1``,
-the BS ``N``, the target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
+the BS ``N``, the (first) target ``N + 1``. Headings are unit vectors ``(hx, hy)``.
 
 This file is a template: :mod:`sarlink.engine.build` compiles it once per distributed rule,
 radio model and relay strategy (:mod:`sarlink.engine.hooks`), and with the chain to a found
@@ -24,7 +24,16 @@ import math
 import numpy as np
 from numba import njit
 
-from sarlink.engine import area, critical_ranges, endurance, graph, motion, records, sensing
+from sarlink.engine import (
+    area,
+    critical_ranges,
+    endurance,
+    graph,
+    many,
+    motion,
+    records,
+    sensing,
+)
 from sarlink.engine.geometry import FAR, PAD, unit
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import (
@@ -60,6 +69,7 @@ RULE_NEAR = False
 SCANS_RANGES = True
 TARGET_MOVES = False
 TARGET_STATE = 0
+MANY_TARGETS = False
 # ---- end of plug-ins ----
 # isort: on
 
@@ -71,7 +81,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     rng_shadow: np.random.Generator, rng_look: np.random.Generator,
                     rng_rule: np.random.Generator, rng_heading: np.random.Generator,
                     edges: np.ndarray, nav: np.ndarray, far: float, r2s: np.ndarray,
-                    tp: np.ndarray, rng_target: np.random.Generator) -> RunRecord:
+                    tp: np.ndarray, rng_target: np.random.Generator, tt: np.ndarray,
+                    rng_others: np.random.Generator) -> RunRecord:
     """Simulate one run; ``rp`` are the radio model's parameters.
 
     ``wp[wp_start[i]:wp_start[i+1]]`` is drone ``i``'s route (empty: distributed drone).
@@ -82,6 +93,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     (``TARGET_MOVES``) moves from there by the target-motion model's hooks with parameters
     ``tp`` and draws from ``rng_target`` (:mod:`sarlink.engine.target_motion`), first for
     ``p.target_delay`` steps before take-off, then at the end of every step's move phase.
+    ``tt`` are every target's last-seen positions, ``(K, 2)``, the first
+    ``(target_x, target_y)``; with several (``MANY_TARGETS``, :mod:`sarlink.engine.many`) the
+    others move, after the first, with draws from ``rng_others``.
     ``cp_steps`` are the steps at which the cumulative records are taken. A run stopped early
     (``p.stop``) has NaN records after its last step and a trajectory that ends there. The
     kernel releases the GIL, so that threads (a threaded Dask worker) can simulate at once.
@@ -100,6 +114,23 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         for j in range(p.target_delay):
             target_move(txy, tstate, j * p.dt, p.dt, tp, edges, p.size, rng_target)
         px[n + 1], py[n + 1] = txy[0], txy[1]
+    n_tg = tt.shape[0]
+    t_det_each, t_not_each = np.full(n_tg, NEVER), np.full(n_tg, NEVER)
+    det_each = np.full(n_tg, -1, dtype=np.int64)
+    if MANY_TARGETS:  # compiled only for several targets (build): each its own rows
+        oxy = tt[1:].copy()  # the targets after the first
+        ostate = np.zeros((n_tg - 1, TARGET_STATE))
+        if TARGET_MOVES:  # after the first's walk before take-off, each other's in order
+            for o in range(n_tg - 1):
+                target_start(oxy[o], ostate[o], tp, rng_others)
+            for j in range(p.target_delay):
+                for o in range(n_tg - 1):
+                    target_move(oxy[o], ostate[o], j * p.dt, p.dt, tp, edges, p.size,
+                                rng_others)
+        ex, ey = np.empty(n_tg), np.empty(n_tg)  # every target's position this step
+        in_each = np.zeros((n_tg, n), dtype=np.bool_)
+        pass_each = np.zeros((n_tg, n), dtype=np.int64)
+        known = np.zeros((n_tg, n), dtype=np.bool_)  # who knows where each target is
     hx, hy = np.empty(n), np.empty(n)
     for i in range(n):
         hx[i], hy[i] = math.cos(heading0[i]), math.sin(heading0[i])
@@ -120,6 +151,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     routed = np.zeros(nw, dtype=np.uint64)  # nodes with a route to the BS
     spread = np.zeros(nw, dtype=np.uint64)  # nodes that know the target's location
     stack = np.empty(m, dtype=np.int64)
+    if MANY_TARGETS:  # the components a location floods over (many.flood)
+        comp, reached = np.empty(n + 1, dtype=np.int64), np.zeros(n + 1, dtype=np.bool_)
+        unseen = np.zeros(nw, dtype=np.uint64)
     nhx, nhy = np.zeros(n), np.zeros(n)  # new headings
     deciding = np.zeros(n, dtype=np.bool_)
     leave_x, leave_y = np.zeros(n), np.zeros(n)  # where a reporting route drone left its tour
@@ -146,6 +180,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                               p.n_steps + 1 if p.trace else 0)
     traj_pos, traj_head, traj_knows, traj_route, traj_mode, traj_links = track
     traj_target = np.empty((p.n_steps + 1 if TARGET_MOVES and p.record else 0, 1, 2))
+    if MANY_TARGETS:
+        traj_target = np.empty((p.n_steps + 1 if TARGET_MOVES and p.record else 0, n_tg, 2))
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
     depth, farthest = np.full(cp_steps.shape[0], np.nan), np.full(cp_steps.shape[0], np.nan)
     acc_reach = acc_conn = 0.0
@@ -155,6 +191,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     routes = wp.shape[0] > 0
     # a recorded run keeps every step; a moving target may walk into a settled drone's range
     may_settle = radio_static(p, rp) and not p.record and not TARGET_MOVES
+    if MANY_TARGETS:
+        may_settle_many = may_settle  # and every target's drones settled too (below)
     polygon = edges.shape[0] > 0
     home_max = far if polygon else motion.farthest_home(p)
     scanning = SCANS_RANGES and r2s.shape[0] > 0
@@ -171,9 +209,19 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                              sorties, ground_s, used, spares)
         # ---- observe: sense, link, flood, notify, account ----
         radio_update(thr2, p, rp, k, rng_shadow)
-        first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
-        if t_det < 0.0 and first >= 0:
-            t_det, detector = t, first
+        if MANY_TARGETS:  # each target in order, then the mission's detection (success)
+            ex[0], ey[0] = px[n + 1], py[n + 1]
+            for o in range(n_tg - 1):
+                ex[o + 1], ey[o + 1] = oxy[o, 0], oxy[o, 1]
+            many.sense(ex, ey, px, py, k, t, p, in_each, pass_each, known, t_det_each,
+                       det_each, rng_look)
+            jd = many.event(t_det_each, p.success)
+            if t_det < 0.0 and jd >= 0:
+                t_det, detector = t_det_each[jd], det_each[jd]
+        else:
+            first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
+            if t_det < 0.0 and first >= 0:
+                t_det, detector = t, first
         push = False  # the pairs within r, on the steps at which a drone may decide
         if RULE_NEAR:
             push = RULE_DUE  # a due hook may make a drone decide at any step
@@ -188,7 +236,14 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                       knows, mode, spread, stack, sc, near, push)
         if not (scanning or p.trace):  # a traced flight is scanned afterwards (critical_ranges)
             graph.bs_component(adj, n, routed, stack)
-            if t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and t_not < 0.0:
+            if MANY_TARGETS:
+                many.flood(adj, known, t_det_each, t_not_each, t, knows, spread, comp,
+                           reached, unseen, stack)
+                jn = many.event(t_not_each, p.success)
+                if t_not < 0.0 and jn >= 0:
+                    t_not = t_not_each[jn]
+            elif t_det >= 0.0 and graph.flood(adj, routed, knows, spread, stack) and \
+                    t_not < 0.0:
                 t_not = t
             reachable, connected = graph.reachability(adj, routed, mode, p.reachability,
                                                       p.parked)
@@ -199,6 +254,8 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                                 traj_knows, traj_route, traj_mode, traj_links)
             if TARGET_MOVES:
                 traj_target[k, 0, 0], traj_target[k, 0, 1] = px[n + 1], py[n + 1]
+                if MANY_TARGETS:
+                    traj_target[k, 1:] = oxy
         elif p.trace:
             records.record_positions(k, px, py, mode, traj_pos, traj_mode)
         if k == p.n_steps or (p.stop == STOP_DETECTED and t_det >= 0.0) or (
@@ -208,6 +265,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         acc_reach += p.dt if reachable else 0.0
         acc_conn += p.dt * connected / n
         homing = (p.flight_time - t) - home_max / p.speed < 2.0 * p.dt
+        if MANY_TARGETS:  # settled only if no drone still looks for a target it lacks
+            may_settle = may_settle_many and (routes or homing) and many.settled(
+                mode, in_each, known, p.look)
         # a drone lands at the end of its route or, homing, at the BS
         if may_settle and (routes or homing) and records.settled(mode, in_range, knows, p.look
                                                                 ) and not (
@@ -273,7 +333,13 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             target_move(txy, tstate, (p.target_delay + k) * p.dt, p.dt, tp, edges, p.size,
                         rng_target)
             px[n + 1], py[n + 1] = txy[0], txy[1]
+            if MANY_TARGETS:
+                for o in range(n_tg - 1):
+                    target_move(oxy[o], ostate[o], (p.target_delay + k) * p.dt, p.dt, tp,
+                                edges, p.size, rng_others)
 
+    if not MANY_TARGETS:  # one target: its events are the mission's
+        t_det_each[0], t_not_each[0], det_each[0] = t_det, t_not, detector
     if ENERGY:  # noqa: SIM108 (a statement Numba prunes: without ENERGY, sorties is unbound)
         flown = records.Sorties(sorties, ground_s, used)
     else:
@@ -286,4 +352,5 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                      cp_steps * p.dt, reach_cum, conn_cum,
                      records.Track(traj_pos[:kk], traj_head[:kk], traj_knows[:kk],
                                    traj_route[:kk], traj_mode[:kk], traj_links[:kk]),
-                     at_ranges, depth, farthest, obs.work[0], flown, traj_target[:kk])
+                     at_ranges, depth, farthest, obs.work[0], flown, traj_target[:kk],
+                     t_det_each, t_not_each, det_each)

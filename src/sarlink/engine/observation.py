@@ -2,7 +2,8 @@
 
 The kernel builds one :class:`Observation` per run; its arrays are the kernel's own and change
 in place every step, so a rule reads the current state through it without a copy. Node
-indices: drones ``0 .. N-1``, the BS ``N``, the target ``N + 1``; bitsets are rows of
+indices: drones ``0 .. N-1``, the BS ``N``, the target ``N + 1`` (with several targets, the
+first: the others are sensed, not nodes; docs/model.md, Several targets); bitsets are rows of
 ``ceil((N + 2) / 64)`` 64-bit words (:mod:`sarlink.engine.graph`: ``has``, ``bit``, ``lowest``).
 """
 
@@ -37,7 +38,7 @@ class Observation(NamedTuple):
     """Step of every drone's last direction change: its decision clock (int64; a ``due``
     hook that makes a drone decide sets it to the current step)."""
     knows: np.ndarray
-    """Whether a drone knows where the target is (bool)."""
+    """Whether a drone knows where the target is (bool; with several, any of them)."""
     adj: np.ndarray
     """Communication links of this step: ``adj[a]`` is node ``a``'s neighbour bitset."""
     near: np.ndarray
@@ -46,7 +47,8 @@ class Observation(NamedTuple):
     routed: np.ndarray
     """Bitset of the nodes with a multihop route to the BS this step (the BS included)."""
     spread: np.ndarray
-    """Bitset of the nodes that know where the target is (empty before the first detection)."""
+    """Bitset of the nodes that know where the target is (empty before the first detection;
+    with several targets, any of them)."""
     rc: float
     """The nominal communication range, m: the range planners predict with (the radio
     model's; shadow-free)."""

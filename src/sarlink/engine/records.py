@@ -63,7 +63,9 @@ def one_sortie(n: int) -> Sorties:
 
 
 class RunRecord(NamedTuple):
-    """One run as the kernel returns it (times in seconds; ``-1``: never)."""
+    """One run as the kernel returns it (times in seconds; ``-1``: never). With several
+    targets (:mod:`sarlink.engine.many`) the events are the mission's, by
+    ``target.success``, and the records of reachability follow the first target."""
 
     t_detect: float
     t_notify: float
@@ -93,8 +95,15 @@ class RunRecord(NamedTuple):
     expanded); 0 for a rule that counts none."""
     sorties: Sorties
     target_track: np.ndarray
-    """``(steps, 1, 2)``: the target's position at every recorded step, m; empty unless the
-    run was recorded and its target moves (:mod:`sarlink.engine.target_motion`)."""
+    """``(steps, K, 2)``: every target's position at every recorded step, m; empty unless the
+    run was recorded and its targets move (:mod:`sarlink.engine.target_motion`)."""
+    t_detect_each: np.ndarray
+    """``(K,)``: each target's first detection, s (``-1``: never); with one target,
+    ``t_detect``. The mission's ``t_detect`` is one of these, by ``target.success``."""
+    t_notify_each: np.ndarray
+    """``(K,)``: the first step's time at which the BS knew where each target is."""
+    detector_each: np.ndarray
+    """``(K,)``: each target's first detector (``-1``: none)."""
 
 
 @njit(cache=True, error_model="numpy")

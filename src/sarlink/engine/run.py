@@ -33,6 +33,7 @@ from sarlink.engine.codes import (
     REPORTERS_CODES,
     SHADOWING_CODES,
     STOP_CODES,
+    SUCCESS_CODES,
 )
 from sarlink.engine.critical_ranges import Critical, critical
 from sarlink.engine.energy import get_energy_model
@@ -128,6 +129,7 @@ class Prepared:
             relay_estimate=int(ESTIMATE_CODES[mission.team.relay_estimate]),
             **battery_params(mission),
             target_delay=round(mission.target.delay / t.dt) if motion.moves else 0,
+            success=int(SUCCESS_CODES[mission.target.success]),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
         return cls(mission=mission, steering=steering, params=params, radio_params=rp,
@@ -150,10 +152,11 @@ class Prepared:
     def kernel(self) -> Any:
         """The kernel compiled for this team's rule, the mission's radio model, the team's
         relay strategy (if it has relays), its chain to a found target (if
-        ``on_detect = relay``), its batteries and the target's motion (if it moves)."""
+        ``on_detect = relay``), its batteries, the target's motion (if it moves) and several
+        targets (if ``target.count > 1``)."""
         return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays,
                           chain=self.params.on_detect == RELAY, energy=self.energy,
-                          target=self.target_motion)
+                          target=self.target_motion, many=self.mission.target.count > 1)
 
     @property
     def energy(self) -> bool:
@@ -186,7 +189,10 @@ class Prepared:
                 self.edges, self.nav, self.far, np.array([rc * rc for rc in scan_at]),
                 # a still target's kernel draws nothing from its stream: none is made
                 self.target_params,
-                streams.target if self.target_motion.moves else streams.turn)
+                streams.target if self.target_motion.moves else streams.turn,
+                scenario.targets,
+                # the other targets move with draws after their positions' (draw_scenario)
+                streams.targets if self.mission.target.count > 1 else streams.turn)
 
     def record(self, streams: Streams, scenario: Scenario, *, trajectory: bool = False,
                traced_at: float | None = None, scan_at: Sequence[float] = ()) -> RunRecord:
@@ -220,7 +226,8 @@ class Prepared:
                ) -> tuple[Streams, Scenario]:
         streams = run_streams(seed, run)
         if scenario is None:
-            scenario = draw_scenario(self.mission, streams.scenario)
+            scenario = draw_scenario(self.mission, streams.scenario, streams.targets
+                                     if self.mission.target.count > 1 else None)
         scenario.check(self.mission)
         return streams, scenario
 
@@ -240,7 +247,8 @@ class Prepared:
                               bs_route=tr.bs_route, mode=tr.mode, links=unpack_links(tr.links),
                               target=rec.target_track if rec.target_track.shape[0] else None)
         return run_result(rec, seed, run, (float(scenario.target[0]), float(scenario.target[1])),
-                          traj, batteries=self.energy)
+                          traj, batteries=self.energy,
+                          targets=scenario.targets if scenario.others else None)
 
     def run_record(self, seed: int = 0, run: int = 0) -> RunRecord:
         """The kernel's own record of run ``run`` (with that run's own routes if the steering
@@ -256,14 +264,14 @@ class Prepared:
         """Whether the team flies the same at every communication range, as the seams declare
         it: the radio model's fades do not depend on ``r_c`` (the built-in log-normal model),
         no drone reports or forms a chain to a found target (``on_detect = continue``: the
-        chain's points depend on ``r_c``), the target stands still (the scan reads one
-        target position), and every distributed drone (if any) runs a rule
+        chain's points depend on ``r_c``), there is one target and it stands still (the scan
+        reads one target position), and every distributed drone (if any) runs a rule
         declared ``range_free`` (CovB). Such a run can be flown once for all ranges
         (:meth:`run_ranges`)."""
         rule = self.steering.rule
         return (get_radio(self.mission.radio).range_free and self.params.on_detect == CONTINUE
                 and self.params.relays == 0 and not self.energy
-                and not self.target_motion.moves
+                and not self.target_motion.moves and self.mission.target.count == 1
                 and (not self.distributed.any() or (rule is not None and rule.range_free)))
 
     def _own(self, seed: int, run: int) -> Prepared:
@@ -339,10 +347,18 @@ class Prepared:
         return out
 
 def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
-               trajectory: Trajectory | None = None, *, batteries: bool = False) -> RunResult:
+               trajectory: Trajectory | None = None, *, batteries: bool = False,
+               targets: np.ndarray | None = None) -> RunResult:
     """The kernel's record of run ``run`` (seed ``seed``) as a :class:`~sarlink.RunResult`;
-    ``batteries``: with the sorties of a team on batteries."""
+    ``batteries``: with the sorties of a team on batteries; ``targets``: several targets'
+    positions, ``(K, 2)``, with each one's events."""
     flown = rec.sorties
+    each: dict[str, Any] = {}
+    if targets is not None:
+        each = {"targets": np.asarray(targets, dtype=float),
+                "t_detect_each": np.where(rec.t_detect_each < 0, np.nan, rec.t_detect_each),
+                "t_notify_each": np.where(rec.t_notify_each < 0, np.nan, rec.t_notify_each),
+                "detector_each": rec.detector_each.copy()}
     return RunResult(
         seed=seed, run=run, target=target,
         t_detect=None if rec.t_detect < 0 else rec.t_detect,
@@ -352,6 +368,7 @@ def run_result(rec: RunRecord, seed: int, run: int, target: tuple[float, float],
         depth=rec.depth, farthest=rec.farthest, trajectory=trajectory,
         **({"sorties": flown.number, "ground_time": flown.ground, "energy": flown.energy}
            if batteries else {}),
+        **each,
     )
 
 

@@ -19,13 +19,20 @@ class Scenario:
 
     ``heading_offset`` rotates the evenly spaced take-off headings ``2πk/N + offset`` of the
     distributed drones. ``positions`` and ``headings`` (radians), when given, replace the
-    take-off from the BS for every drone: for hand-made situations and tests.
+    take-off from the BS for every drone: for hand-made situations and tests. ``others``
+    are where the targets after the first were last seen (``target.count > 1``).
     """
 
     target: tuple[float, float]
     heading_offset: float = 0.0
     positions: np.ndarray | None = None
     headings: np.ndarray | None = None
+    others: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def targets(self) -> np.ndarray:
+        """Every target's last-seen position, ``(K, 2)``, the first first."""
+        return np.array([self.target, *self.others], dtype=float).reshape(-1, 2)
 
     def check(self, mission: Mission) -> None:
         """Raise :class:`ConfigError` if this scenario does not fit ``mission``."""
@@ -37,6 +44,12 @@ class Scenario:
         area = None if square else area_polygon(region, size)
         if not _inside(area, size, np.array([[x, y]])):
             raise ConfigError(f"scenario.target must lie inside {where}, got ({x}, {y})")
+        count = mission.target.count
+        if len(self.others) != count - 1:
+            raise ConfigError(f"scenario.others must give the {count - 1} targets after the "
+                              f"first (target.count = {count}), got {len(self.others)}")
+        if self.others and not _inside(area, size, np.array(self.others, dtype=float)):
+            raise ConfigError(f"scenario.others must lie inside {where}")
         for name, arr, shape in (("positions", self.positions, (n, 2)),
                                  ("headings", self.headings, (n,))):
             if arr is not None and np.shape(arr) != shape:
@@ -52,16 +65,28 @@ def _inside(area: shapely.Polygon | None, size: float, xy: np.ndarray) -> bool:
     return bool(shapely.dwithin(area, shapely.points(xy), EDGE).all())
 
 
-def draw_scenario(mission: Mission, rng: np.random.Generator) -> Scenario:
-    """A target from the mission's prior (uniform in the square by default, drawn as the
-    paper's runs always were) and a uniform take-off heading offset."""
+def _draw_target(mission: Mission, rng: np.random.Generator) -> tuple[float, float]:
     prior = target_prior(mission)
     if prior is None:
         size = mission.area.size
-        x, y = rng.random() * size, rng.random() * size
-    else:
-        x, y = prior.draw(rng)
-    return Scenario(target=(x, y), heading_offset=rng.random() * 2 * math.pi)
+        return rng.random() * size, rng.random() * size
+    return prior.draw(rng)
+
+
+def draw_scenario(mission: Mission, rng: np.random.Generator,
+                  others: np.random.Generator | None = None) -> Scenario:
+    """A target from the mission's prior (uniform in the square by default, drawn as the
+    paper's runs always were) and a uniform take-off heading offset; with
+    ``target.count = K > 1``, the other ``K - 1`` targets from the same prior, in order, from
+    ``others`` (the run's targets stream), so that no draw of ``rng`` changes."""
+    x, y = _draw_target(mission, rng)
+    offset = rng.random() * 2 * math.pi
+    count = mission.target.count
+    if count > 1 and others is None:
+        raise ValueError(f"target.count = {count} draws the other targets from the run's "
+                         "targets stream: pass it")
+    rest = tuple(_draw_target(mission, others) for _ in range(count - 1)) if others else ()
+    return Scenario(target=(x, y), heading_offset=offset, others=rest)
 
 
 HEADING_ERROR = math.radians(5.0)

@@ -79,6 +79,12 @@ class Streams:
         :mod:`sarlink.engine.target_motion`)."""
         return self._stream(8)
 
+    @property
+    def targets(self) -> np.random.Generator:
+        """Where the targets after the first were last seen (``target.count > 1``): the
+        first is drawn from :attr:`scenario` as it always was."""
+        return self._stream(9)
+
 
 def run_streams(seed: int, run: int) -> Streams:
     """The independent generators of run ``run`` of an experiment seeded with ``seed``."""

@@ -52,7 +52,8 @@ def stepping_mission(mission: Mission) -> Prepared:
     rule (the agents take its decisions and follow its schedule), and its runs stop at the
     BS's notification. Relays and the chain to a found target (``on_detect = relay``) are
     refused: the agents are the drones, and a drone holding a point takes no direction;
-    batteries too, for now (the stepping kernel is compiled without them)."""
+    batteries and several targets too, for now (the stepping kernel is compiled without
+    them)."""
     if mission.team.relays:
         raise ConfigError(f"team.relays = {mission.team.relays}: sarlink.env steers every drone "
                           "as a searcher and cannot take relays yet; allowed: team.relays = 0")
@@ -60,6 +61,10 @@ def stepping_mission(mission: Mission) -> Prepared:
         raise ConfigError("team.on_detect = 'relay': sarlink.env steers every drone as a "
                           "searcher and cannot take the chain's drones; allowed: continue, "
                           "report")
+    if mission.target.count > 1:
+        raise ConfigError(f"target.count = {mission.target.count}: sarlink.env searches for "
+                          "one target yet (its stepping kernel is compiled without several); "
+                          "allowed: target.count = 1")
     if mission.battery.battery_wh is not None:
         raise ConfigError(f"battery.battery_wh = {mission.battery.battery_wh:g}: sarlink.env "
                           "flies drones without batteries yet; allowed: no battery_wh")

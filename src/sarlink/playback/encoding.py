@@ -11,7 +11,8 @@ base64), because every quantity is stored at the width it needs:
 - knows, route to the BS: one bit per drone and step;
 - links: one bit per node pair ``i < j`` (upper triangle of the ``(N + 2)²`` matrix, drones,
   BS, target) and step;
-- a moving target's position: ``float32`` per coordinate and step (absent for a still one).
+- a moving target's position: ``float32`` per coordinate and step (absent for a still one),
+  and those of the other targets of several (``others``, frame by frame, target by target).
 
 Runs longer than the byte budget keep every ``stride``-th step (and the last); the page then
 shows each kept step until the next. Nothing is compressed, so the page decodes synchronously
@@ -63,6 +64,9 @@ class EncodedTrajectory:
     """bits (frames, pairs) over :func:`link_pairs` (drones + 2)"""
     target: str = ""
     """float32 (frames, 2): a moving target's position; empty for a still target"""
+    others: str = ""
+    """float32 (frames, K - 1, 2): the other moving targets' positions (``target.count = K``);
+    empty for one target or still ones"""
 
     def json(self) -> dict[str, object]:
         """The fields by name, as the page's data block holds them."""
@@ -131,6 +135,8 @@ def encode(traj: Trajectory, budget: float = math.inf) -> EncodedTrajectory:
         route=_bits(traj.bs_route[keep]),
         links=_bits(traj.links[keep][:, i, j]),
         target="" if traj.target is None else _b64(traj.target[keep, 0].astype("<f4")),
+        others="" if traj.target is None or traj.target.shape[1] == 1 else
+        _b64(traj.target[keep, 1:].astype("<f4")),
     )
 
 
@@ -161,6 +167,7 @@ def decode(enc: EncodedTrajectory) -> Trajectory:
         bs_route=_unbits(enc.route, (f, n)),
         mode=_unb64(enc.mode, "u1").reshape(f, n),
         links=links,
-        target=None if not enc.target else
-        _unb64(enc.target, "<f4").astype(float).reshape(f, 1, 2),
+        target=None if not enc.target else np.concatenate(
+            [_unb64(enc.target, "<f4").astype(float).reshape(f, 1, 2),
+             _unb64(enc.others, "<f4").astype(float).reshape(f, -1, 2)], axis=1),
     )

@@ -50,9 +50,11 @@
     for (let i = 0; i < nodes; i++) for (let j = i + 1; j < nodes; j++) pairs.push([i, j]);
     /* a moving target's position per frame (float32 pairs), or null for a still one */
     const target = f.target ? new Float32Array(bytes(f.target).buffer) : null;
+    /* the other targets of several, moving: (frames, K - 1) float32 pairs, or null */
+    const others = f.others ? new Float32Array(bytes(f.others).buffer) : null;
     return { frames: f.frames, drones: f.drones, t: t, positions: positions, pairs: pairs,
              headings: bytes(f.headings), mode: bytes(f.mode), knows: bytes(f.knows),
-             route: bytes(f.route), links: bytes(f.links), target: target };
+             route: bytes(f.route), links: bytes(f.links), target: target, others: others };
   }
 
   /* -- one panel: a run drawn on a canvas --------------------------------------------------- */
@@ -347,6 +349,42 @@
       ctx.arc(target[0], target[1], 10, 0, 2 * Math.PI);
       ctx.stroke();
     }
+
+    /* the other targets of several: each one's track so far if it moves, its cross bold
+       and ringed once it is found */
+    const others = s.others || [];
+    others.forEach(function (seen, o) {
+      const where = function (j) {
+        if (!run.others) return self.toScreen(view, seen[0], seen[1]);
+        const at2 = 2 * (j * others.length + o);
+        return self.toScreen(view, run.others[at2], run.others[at2 + 1]);
+      };
+      ctx.strokeStyle = COLOUR.target;
+      if (run.others) {
+        ctx.lineWidth = 1.2;
+        ctx.setLineDash([4, 3]);
+        ctx.beginPath();
+        for (let j = 0; j <= k; j++) {
+          const q = where(j);
+          if (j === 0) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]);
+        }
+        ctx.stroke();
+        ctx.setLineDash([]);
+      }
+      const p = where(k);
+      const found = s.othersDetect[o] !== null && run.t[k] >= s.othersDetect[o];
+      ctx.lineWidth = found ? 3.5 : 1.5;
+      ctx.beginPath();
+      ctx.moveTo(p[0] - 6, p[1] - 6); ctx.lineTo(p[0] + 6, p[1] + 6);
+      ctx.moveTo(p[0] + 6, p[1] - 6); ctx.lineTo(p[0] - 6, p[1] + 6);
+      ctx.stroke();
+      if (found) {
+        ctx.lineWidth = 1.5;
+        ctx.beginPath();
+        ctx.arc(p[0], p[1], 10, 0, 2 * Math.PI);
+        ctx.stroke();
+      }
+    });
 
     /* drones: fill by mode, a red ring when the drone knows the target, a heading tick */
     const drones = [];

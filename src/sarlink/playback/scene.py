@@ -70,6 +70,10 @@ def scene(result: RunResult, mission: Mission, title: str | None = None,
         "events": [e.json() for e in events(result)],
         "tours": tours,
         "frames": encode(traj, budget).json(),
+        # several targets: where the others were last seen, and when each was found
+        "others": [] if result.targets is None else result.targets[1:].tolist(),
+        "othersDetect": [] if result.t_detect_each is None else
+        [None if math.isnan(v) else v for v in result.t_detect_each[1:].tolist()],
         **_area(mission),  # a polygon's frame replaces the square's size
     }
 

@@ -13,7 +13,7 @@ from sarlink.config import Mission
 from sarlink.engine.codes import Mode
 from sarlink.playback.scene import setting
 from sarlink.plots.area import draw_area
-from sarlink.result import RunResult
+from sarlink.result import RunResult, Trajectory
 
 
 def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) -> plt.Axes:
@@ -55,6 +55,8 @@ def plot_run(result: RunResult, mission: Mission, ax: plt.Axes | None = None) ->
         ax.plot(*result.target, marker="x", ms=9, color="tab:red", ls="none",
                 label="target last seen")
     ax.plot(tx, ty, marker="X", ms=11, color="tab:red", ls="none", label="target")
+    if result.targets is not None:  # several: the others, each where it was found or ended
+        _other_targets(ax, result, traj)
     if result.t_detect is not None and result.detector is not None:
         k = int(np.searchsorted(traj.t, result.t_detect))
         x, y = traj.positions[k, result.detector]
@@ -133,3 +135,24 @@ def plot_network(result: RunResult, mission: Mission, ax: plt.Axes | None = None
               bbox_to_anchor=(0.0, 1.0), ncols=3, fontsize=8, frameon=False)  # above the data
     ax.set_ylim(0, max(float(np.nanmax(result.depth, initial=0.0)), 1.0) + 0.5)
     return ax
+
+
+def _other_targets(ax: plt.Axes, result: RunResult, traj: Trajectory) -> None:
+    """Targets 2..K of several: each one's track if they move, and its cross where it was
+    found (ringed) or, if never, where it was last (or at the end)."""
+    assert result.targets is not None and result.t_detect_each is not None
+    ringed = False
+    for j in range(1, result.targets.shape[0]):
+        found = result.t_detect_each[j]
+        at = result.targets[j]
+        if traj.target is not None:
+            ax.plot(traj.target[:, j, 0], traj.target[:, j, 1], color="tab:red", lw=0.9,
+                    ls=(0, (2, 1)), alpha=0.7)
+            at = traj.target[-1 if np.isnan(found) else
+                             int(np.searchsorted(traj.t, found)), j]
+        ax.plot(*at, marker="X", ms=9, color="tab:red", ls="none",
+                label="the other targets" if j == 1 else None)
+        if not np.isnan(found):
+            ax.plot(*at, marker="o", ms=14, mfc="none", mec="tab:red", ls="none",
+                    label=None if ringed else "found (ringed)")
+            ringed = True
