@@ -427,6 +427,8 @@ def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the
             assert experiment.grid["on_detect"] == ["continue", "report"]
         elif exp.name == "relays":
             assert flown == {RELAY_PLANNER}
+        elif exp.name == "moving":
+            assert flown == set(PAPER_PLANNERS) | others
         else:
             assert flown == set(PAPER_PLANNERS)
 

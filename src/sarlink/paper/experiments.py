@@ -45,6 +45,14 @@ __all__ = [
     "EXPERIMENTS",
     "FIG2_DRONES",
     "FIG5_RANGES",
+    "MOTIONS",
+    "MOVING_CURRENT",
+    "MOVING_DELAYS",
+    "MOVING_DRONES",
+    "MOVING_FIG",
+    "MOVING_RC",
+    "MOVING_TDS",
+    "MOVING_WIND",
     "OTHERS",
     "PAPER_PLANNERS",
     "PLAN_TIME_PLANNERS",
@@ -67,6 +75,7 @@ __all__ = [
     "TD_LONG",
     "TD_SHORT",
     "PaperExperiment",
+    "moving_planners",
     "mtsp_plans",
     "other_planners",
     "plan_time_missions",
@@ -295,6 +304,61 @@ def _relays_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
             "relays_runs": run_values(runs, list(RELAY_TDS), by)}
 
 
+MOVING_DRONES = 10
+"""The team size of Fig. :data:`MOVING_FIG`: that of the first row of Fig. 2 and of Figs. 7a
+and 8a, the paper's middle team, which neither finds every target at once nor misses most."""
+MOVING_RC = 500.0
+"""Its communication range, m: the paper's shortest, that of Fig. 7a, where P_s is far from
+1 at the t_d read, so a target's motion can show in it (at 2000 m nearly every planner
+notifies nearly every run by 2000 s)."""
+MOTIONS = ("still", "walk", "drift")
+"""The target motions of Fig. :data:`MOVING_FIG` (docs/model.md, Target motion), each with
+its defaults: a walker at 0.5 m/s who stops after a log-normal time of median 4 h; a person
+in the water (PIW-1) under :data:`MOVING_WIND` and :data:`MOVING_CURRENT`."""
+MOVING_WIND = (5.0, 0.0)
+"""The drifting target's 10 m wind, m/s (east, north): a gentle breeze (Beaufort 3) towards
+the east, constant. PIW-1's leeway is some 1 % of it downwind, 5 cm/s."""
+MOVING_CURRENT = (0.0, 0.2)
+"""Its surface current, m/s (east, north): 0.2 m/s (0.4 kn) towards the north, constant, a
+moderate coastal current; with the leeway the target moves some 0.21 m/s, 760 m an hour,
+and may leave the square (then no drone inside it can find it: docs/model.md, drift)."""
+MOVING_DELAYS = (0.0, 1800.0)
+"""The times from the last sighting to take-off, s: none, the paper's case, and half an hour,
+during which a walker or a drifter moves before the drones fly (a still target ignores it)."""
+MOVING_TDS = (TD_SHORT, TD_FIG3, TD_LONG)
+"""The target durations its tables and sentences read, s; the figure draws P_s against t_d
+up to :data:`TD_LONG`."""
+
+
+def moving_planners() -> list[str]:
+    """The planners of Fig. :data:`MOVING_FIG`: the paper's five, then every other registered
+    one (the IAMSAR search patterns), as the ``others`` sweep reads them."""
+    return [*PAPER_PLANNERS, *other_planners()]
+
+
+def _moving(runs: int) -> Experiment:
+    """Beyond the paper: every planner against a still, a walking and a drifting target, at
+    N_m = 10 and r_c = 500 m, with and without a delay before take-off. Their runs stop at
+    notification: the figure and the tables read P_s alone."""
+    return Experiment(
+        name="Beyond: targets that move", seed=SEED, runs=runs,
+        mission=Mission.build(drones=MOVING_DRONES, rc=MOVING_RC, horizon=TD_LONG,
+                              stop="notified", drift_wind=[MOVING_WIND],
+                              drift_current=[MOVING_CURRENT]),
+        grid={"planner": moving_planners(), "motion": list(MOTIONS),
+              "delay": list(MOVING_DELAYS)},
+    )
+
+
+_MOVING_BY = ["planner", "drones", "rc", "motion", "delay"]
+
+
+def _moving_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"moving": summarize(runs, td=list(MOVING_TDS), by=_MOVING_BY),
+            "moving_curve": success_curve(runs, CURVE_TDS, by=_MOVING_BY),
+            "moving_runs": run_values(runs, list(MOVING_TDS), _MOVING_BY)}
+
+
 BEYOND = 8
 """The number of the figure beyond the paper's seven: its planners with drones that report."""
 OTHERS = 9
@@ -303,6 +367,8 @@ RANGE_FIG = 10
 """The number of the figure of P_s against a continuous communication range."""
 RELAY_FIG = 11
 """The number of the figure of searchers and relays against the paper's planners."""
+MOVING_FIG = 12
+"""The number of the figure of the planners against a walking and a drifting target."""
 
 EXPERIMENTS = {e.name: e for e in (
     PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS, RANGE_FIG, RELAY_FIG), _main,
@@ -312,6 +378,7 @@ EXPERIMENTS = {e.name: e for e in (
     PaperExperiment("report", (BEYOND, OTHERS), _report, _report_tables),
     PaperExperiment("others", (OTHERS,), _others, _others_tables),
     PaperExperiment("relays", (RELAY_FIG,), _relays, _relays_tables, quick_share=0.25),
+    PaperExperiment("moving", (MOVING_FIG,), _moving, _moving_tables, quick_share=0.25),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
