@@ -129,7 +129,7 @@ def test_the_sentences_name_the_falls_the_best_planners_and_the_patterns() -> No
     assert line.startswith(
         "Against a walking target, 0 s from the last sighting to take-off, P_s is lower than "
         "against a still one at 2 and higher at 2 of 6 points (3 planners × t_d = 1000, "
-        "2000 s); the largest fall: mTSP, -0.500 [")
+        "2000 s; paired, 95% intervals); the largest fall: mTSP, -0.500 [")
     assert line.endswith("at t_d = 1000 s (0.700 [0.604, 0.781] to 0.200 [0.133, 0.289]).")
     best = best_text(runs, td=1000.0)
     assert best[0].startswith("At t_d = 1000 s the highest P_s: a still target: mTSP, 0.700 [")
@@ -141,6 +141,9 @@ def test_the_sentences_name_the_falls_the_best_planners_and_the_patterns() -> No
                               "planners at t_d = 1000 s (paired): a still target: Sector below "
                               "mTSP, -0.400 [")
     assert "take-off: Sector above CovB, 0.150 [" in best[2]
+    (rising,) = moving_text(moving_points(_runs({("covb", "still", 0.0): range(50),
+                                                 ("covb", "walk", 0.0): range(55)})))
+    assert rising.endswith("; no planner's P_s is lower at any point.")
     table = moving_table(points)
     assert len(table) == 6 and list(table["planner"][:2]) == ["mTSP", "mTSP"]
     assert moving_text([]) == [] and best_text(runs.iloc[:0]) == []

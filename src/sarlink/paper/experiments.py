@@ -320,7 +320,7 @@ MOVING_WIND = (5.0, 0.0)
 the east, constant. PIW-1's leeway is some 1 % of it downwind, 5 cm/s."""
 MOVING_CURRENT = (0.0, 0.2)
 """Its surface current, m/s (east, north): 0.2 m/s (0.4 kn) towards the north, constant, a
-moderate coastal current; with the leeway the target moves some 0.21 m/s, 760 m an hour,
+moderate coastal current; with the leeway the target moves some 0.21 m/s, 740 m an hour,
 and may leave the square (then no drone inside it can find it: docs/model.md, drift)."""
 MOVING_DELAYS = (0.0, 1800.0)
 """The times from the last sighting to take-off, s: none, the paper's case, and half an hour,
