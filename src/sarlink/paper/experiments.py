@@ -8,8 +8,9 @@ whose flights it shares between its three ranges anyway: Fig. :data:`RANGE_FIG` 
 every range from 100 m to 3000 m from them. Fig. 7a (imperfect sensing) and Fig. 7b
 (shadowing) change the mission itself and need sweeps of their own; they plot only detection
 (7a) or notification (7b), so their runs stop at that event, which makes them several times
-faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND`, :data:`OTHERS` and
-:data:`RELAY_FIG`: drones that report, the other planners, searchers and relays), which show
+faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND`, :data:`OTHERS`,
+:data:`RELAY_FIG` and :data:`MOVING_FIG`: drones that report, the other planners, searchers
+and relays, targets that move), which show
 P_s, mission time and search share, all settled at notification: their runs stop there, and
 their tables have no reachability or connected fraction past a run's stop (NaN). Fig. 1
 times the planners rather than simulating missions. Every experiment uses the one seed
@@ -18,7 +19,9 @@ every other registered planner (:func:`sarlink.planner_names`: the IAMSAR search
 and any planner registered since) is flown over the main grid, with and without drones that
 report, by the ``beyond`` experiment, read when it is built, so that a newly registered
 planner is compared with the paper's without edits here; Fig. :data:`RELAY_FIG` flies CovB
-searchers with relays (:data:`RELAY_PLANNER`, :data:`RELAY_COUNTS`).
+searchers with relays (:data:`RELAY_PLANNER`, :data:`RELAY_COUNTS`); Fig. :data:`MOVING_FIG`
+flies the paper's planners and the others against a still, a walking and a drifting target
+(:data:`MOTIONS`) at one team size and range (:data:`MOVING_DRONES`, :data:`MOVING_RC`).
 """
 
 from __future__ import annotations
@@ -387,7 +390,11 @@ EXPERIMENTS = {e.name: e for e in (
 ``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too;
 ``relays`` the tables ``relays`` (by the relay count too) and ``relays_runs``, paired with
 ``main_runs`` run by run; under ``--quick`` it flies a quarter of the runs (25 of 100), since
-a relay run costs some ten plain ones at r_c = 500 m."""
+a relay run costs some ten plain ones at r_c = 500 m; ``moving`` the tables ``moving``
+(``summarize`` at :data:`MOVING_TDS` by target motion and delay too), ``moving_curve``
+(``success_curve`` at :data:`CURVE_TDS`) and ``moving_runs``, paired run by run between the
+motions; under ``--quick`` it too flies a quarter of the runs, so that its 48 points add
+little to the quick reproduction."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:
