@@ -238,7 +238,7 @@ ROWS: list[tuple[list[str], list[str]]] = [
     (["summarize", "{d}/empty", "--td", "-5"], ["--td", "> 0", "got -5"]),
     (["summarize", "{d}/empty", "--td", "nan"], ["--td", "finite"]),
     # -- reproduce and the app ---------------------------------------------------------------
-    (["reproduce", "--figures", "12", "--out", "{d}/r"], ["figures must be among 1, 2"]),
+    (["reproduce", "--figures", "13", "--out", "{d}/r"], ["figures must be among 1, 2"]),
     (["reproduce", "--figures", "one", "--out", "{d}/r"], ["--figures", "like 1,3,7"]),
     (["reproduce", "--runs", "0", "--out", "{d}/r"], ["runs must be at least 1"]),
     (["reproduce", "--out", "{d}/afile"], ["--out", "afile is a file"]),

@@ -32,6 +32,10 @@ from sarlink.paper.evidence import Estimate, Outcome
 from sarlink.paper.experiments import (
     DRONES,
     EXPERIMENTS,
+    MOVING_DELAYS,
+    MOVING_DRONES,
+    MOVING_RC,
+    MOVING_TDS,
     PLAN_TIME_PLANNERS,
     RANGES,
     RELAY_PLANNER,
@@ -42,6 +46,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, fig3
 from sarlink.paper.findings import CLAIMS, Claim, fig1, section3
+from sarlink.paper.moving import best_text, moving_points, moving_text
 from sarlink.paper.report import write_report
 from sarlink.planners import (
     PAPER_PLANNERS,
@@ -65,20 +70,21 @@ def quick(tmp_path_factory: pytest.TempPathFactory) -> ReproductionResult:
 
 def test_every_figure_and_both_reports_exist(quick: ReproductionResult) -> None:
     out = quick.out
-    for n in range(1, 12):  # the paper's seven, Figs. 8-11 beyond the paper
+    for n in range(1, 13):  # the paper's seven, Figs. 8-12 beyond the paper
         for ext in ("png", "svg"):
             path = out / "figures" / f"fig{n}.{ext}"
             assert path.stat().st_size > 10_000, path
-    assert sorted(quick.figures) == list(range(1, 12))
+    assert sorted(quick.figures) == list(range(1, 13))
     assert quick.report_md == out / "report.md"
     page = quick.report_html.read_text()
-    assert page.count("data:image/png;base64,") == 11
+    assert page.count("data:image/png;base64,") == 12
     assert "Beyond the paper: drones that go and tell" in page
     assert "Beyond the paper: the search patterns SAR teams fly" in page
     assert "Beyond the paper: how many drones should hold the link?" in page
+    assert "Beyond the paper: targets that move" in page
     assert not re.search(r"""(src|href)=["']?(https?:|//|figures/)""", page)  # self-contained
     for name in ("main", "curve", "miss", "shadowing", "plan_times", "report", "report_curve",
-                 "others", "range_curve", "relays"):
+                 "others", "range_curve", "relays", "moving", "moving_curve"):
         assert (out / "tables" / f"{name}.csv").exists()
         assert (out / "tables" / f"{name}.parquet").exists()
 
@@ -133,6 +139,43 @@ def test_the_quick_relay_sweep_flies_a_quarter_of_the_runs_and_its_tables_are_th
     pd.testing.assert_frame_equal(pd.read_parquet(quick.out / "tables" / "relays.parquet"),
                                   recomputed)
     assert "over 3 runs per point, paired run by run" in quick.report_md.read_text()
+
+
+def test_the_quick_moving_sweep_finds_a_still_target_as_the_main_sweep_does(
+        quick: ReproductionResult) -> None:
+    """``--quick`` at 10 runs per point flies the first 3 of the moving targets' runs; the
+    stored tables are their summaries. A still target's runs are those of the main sweep at
+    N_m = 10, r_c = 500 m, flown again by another sweep (its runs stop at notification, the
+    main sweep's at 4000 s, once for every range): the same notification time in every run,
+    and whatever the delay, which a still target ignores. The report's sentences are those of
+    the stored runs."""
+    runs = load_runs(quick.out, "moving")
+    assert sorted(set(runs["run"])) == [0, 1, 2]
+    assert len(runs) == 3 * len(EXPERIMENTS["moving"].build(1).points())
+    by = ["planner", "drones", "rc", "motion", "delay"]
+    recomputed = summarize(runs, td=list(MOVING_TDS), by=by)
+    pd.testing.assert_frame_equal(pd.read_parquet(quick.out / "tables" / "moving.parquet"),
+                                  recomputed)
+    main = load_runs(quick.out, "main")
+    main = main[(main["drones"] == MOVING_DRONES) & (main["rc"] == MOVING_RC)
+                & (main["run"] < 3)].set_index(["planner", "run"])["t_notify"]
+    for delay in MOVING_DELAYS:
+        still = runs[(runs["motion"] == "still") & (runs["delay"] == delay)
+                     & runs["planner"].isin(PAPER_PLANNERS)].set_index(["planner", "run"])
+        assert len(still) == len(main) == 3 * len(PAPER_PLANNERS)
+        pd.testing.assert_series_equal(still["t_notify"].sort_index(), main.sort_index())
+    stills = runs[runs["motion"] == "still"].pivot_table(
+        index=["planner", "run"], columns="delay", values="t_notify", dropna=False)
+    pd.testing.assert_series_equal(stills[MOVING_DELAYS[0]], stills[MOVING_DELAYS[-1]],
+                                   check_names=False)
+    md = quick.report_md.read_text()
+    section = md[md.index("## Beyond the paper: targets that move"):]
+    each = run_values(runs, list(MOVING_TDS), by)
+    lines = [*moving_text(moving_points(each)), *best_text(each)]
+    assert len(lines) == 2 * len(MOVING_DELAYS) + 3
+    for line in lines:
+        assert f"- {line}" in section
+    assert "over 3 runs per point, paired run by run" in section
 
 
 def _report_table(md: str, heading: str) -> list[list[str]]:
@@ -427,6 +470,8 @@ def test_the_paper_figures_fly_the_paper_planners_and_a_new_one_joins_beyond_the
             assert experiment.grid["on_detect"] == ["continue", "report"]
         elif exp.name == "relays":
             assert flown == {RELAY_PLANNER}
+        elif exp.name == "moving":
+            assert flown == set(PAPER_PLANNERS) | others
         else:
             assert flown == set(PAPER_PLANNERS)
 

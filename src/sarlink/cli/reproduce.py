@@ -32,8 +32,8 @@ def reproduce(
     figures: Annotated[str | None, typer.Option(
         help="figures to reproduce, e.g. 1,3,7 (the paper's 1-7; beyond the paper, 8: drones "
              "that fly to tell the BS, 9: the other planners, such as the IAMSAR search "
-             "patterns, 10: P_s against a continuous range, 11: searchers and relays); "
-             "default all")] = None,
+             "patterns, 10: P_s against a continuous range, 11: searchers and relays, "
+             "12: targets that walk or drift); default all")] = None,
     workers: Annotated[int | None, typer.Option(
         help="local worker processes; default one per core", min=1, max=MAX_WORKERS)] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -51,7 +51,7 @@ def reproduce(
         "reading (reruns the planners each reaches); default: yes, but not with --quick",
         show_default=False)] = None,
 ) -> None:
-    """Rerun the experiments behind the paper's Figs. 1-7 (and Figs. 8-11, beyond it), draw
+    """Rerun the experiments behind the paper's Figs. 1-7 (and Figs. 8-12, beyond it), draw
     them and report which of the paper's claims hold, are contradicted or stay undecided; an
     interrupted reproduction resumes where it stopped."""
     import matplotlib

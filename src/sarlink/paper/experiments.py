@@ -8,8 +8,9 @@ whose flights it shares between its three ranges anyway: Fig. :data:`RANGE_FIG` 
 every range from 100 m to 3000 m from them. Fig. 7a (imperfect sensing) and Fig. 7b
 (shadowing) change the mission itself and need sweeps of their own; they plot only detection
 (7a) or notification (7b), so their runs stop at that event, which makes them several times
-faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND`, :data:`OTHERS` and
-:data:`RELAY_FIG`: drones that report, the other planners, searchers and relays), which show
+faster. So do the sweeps beyond the paper (Figs. :data:`BEYOND`, :data:`OTHERS`,
+:data:`RELAY_FIG` and :data:`MOVING_FIG`: drones that report, the other planners, searchers
+and relays, targets that move), which show
 P_s, mission time and search share, all settled at notification: their runs stop there, and
 their tables have no reachability or connected fraction past a run's stop (NaN). Fig. 1
 times the planners rather than simulating missions. Every experiment uses the one seed
@@ -18,7 +19,9 @@ every other registered planner (:func:`sarlink.planner_names`: the IAMSAR search
 and any planner registered since) is flown over the main grid, with and without drones that
 report, by the ``beyond`` experiment, read when it is built, so that a newly registered
 planner is compared with the paper's without edits here; Fig. :data:`RELAY_FIG` flies CovB
-searchers with relays (:data:`RELAY_PLANNER`, :data:`RELAY_COUNTS`).
+searchers with relays (:data:`RELAY_PLANNER`, :data:`RELAY_COUNTS`); Fig. :data:`MOVING_FIG`
+flies the paper's planners and the others against a still, a walking and a drifting target
+(:data:`MOTIONS`) at one team size and range (:data:`MOVING_DRONES`, :data:`MOVING_RC`).
 """
 
 from __future__ import annotations
@@ -45,6 +48,14 @@ __all__ = [
     "EXPERIMENTS",
     "FIG2_DRONES",
     "FIG5_RANGES",
+    "MOTIONS",
+    "MOVING_CURRENT",
+    "MOVING_DELAYS",
+    "MOVING_DRONES",
+    "MOVING_FIG",
+    "MOVING_RC",
+    "MOVING_TDS",
+    "MOVING_WIND",
     "OTHERS",
     "PAPER_PLANNERS",
     "PLAN_TIME_PLANNERS",
@@ -67,6 +78,7 @@ __all__ = [
     "TD_LONG",
     "TD_SHORT",
     "PaperExperiment",
+    "moving_planners",
     "mtsp_plans",
     "other_planners",
     "plan_time_missions",
@@ -295,6 +307,61 @@ def _relays_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
             "relays_runs": run_values(runs, list(RELAY_TDS), by)}
 
 
+MOVING_DRONES = 10
+"""The team size of Fig. :data:`MOVING_FIG`: that of the first row of Fig. 2 and of Figs. 7a
+and 8a, the paper's middle team, which neither finds every target at once nor misses most."""
+MOVING_RC = 500.0
+"""Its communication range, m: the paper's shortest, that of Fig. 7a, where P_s is far from
+1 at the t_d read, so a target's motion can show in it (at 2000 m nearly every planner
+notifies nearly every run by 2000 s)."""
+MOTIONS = ("still", "walk", "drift")
+"""The target motions of Fig. :data:`MOVING_FIG` (docs/model.md, Target motion), each with
+its defaults: a walker at 0.5 m/s who stops after a log-normal time of median 4 h; a person
+in the water (PIW-1) under :data:`MOVING_WIND` and :data:`MOVING_CURRENT`."""
+MOVING_WIND = (5.0, 0.0)
+"""The drifting target's 10 m wind, m/s (east, north): a gentle breeze (Beaufort 3) towards
+the east, constant. PIW-1's leeway is some 1 % of it downwind, 5 cm/s."""
+MOVING_CURRENT = (0.0, 0.2)
+"""Its surface current, m/s (east, north): 0.2 m/s (0.4 kn) towards the north, constant, a
+moderate coastal current; with the leeway the target moves some 0.21 m/s, 740 m an hour,
+and may leave the square (then no drone inside it can find it: docs/model.md, drift)."""
+MOVING_DELAYS = (0.0, 1800.0)
+"""The times from the last sighting to take-off, s: none, the paper's case, and half an hour,
+during which a walker or a drifter moves before the drones fly (a still target ignores it)."""
+MOVING_TDS = (TD_SHORT, TD_FIG3, TD_LONG)
+"""The target durations its tables and sentences read, s; the figure draws P_s against t_d
+up to :data:`TD_LONG`."""
+
+
+def moving_planners() -> list[str]:
+    """The planners of Fig. :data:`MOVING_FIG`: the paper's five, then every other registered
+    one (the IAMSAR search patterns), as the ``others`` sweep reads them."""
+    return [*PAPER_PLANNERS, *other_planners()]
+
+
+def _moving(runs: int) -> Experiment:
+    """Beyond the paper: every planner against a still, a walking and a drifting target, at
+    N_m = 10 and r_c = 500 m, with and without a delay before take-off. Their runs stop at
+    notification: the figure and the tables read P_s alone."""
+    return Experiment(
+        name="Beyond: targets that move", seed=SEED, runs=runs,
+        mission=Mission.build(drones=MOVING_DRONES, rc=MOVING_RC, horizon=TD_LONG,
+                              stop="notified", drift_wind=[MOVING_WIND],
+                              drift_current=[MOVING_CURRENT]),
+        grid={"planner": moving_planners(), "motion": list(MOTIONS),
+              "delay": list(MOVING_DELAYS)},
+    )
+
+
+_MOVING_BY = ["planner", "drones", "rc", "motion", "delay"]
+
+
+def _moving_tables(runs: pd.DataFrame) -> dict[str, pd.DataFrame]:
+    return {"moving": summarize(runs, td=list(MOVING_TDS), by=_MOVING_BY),
+            "moving_curve": success_curve(runs, CURVE_TDS, by=_MOVING_BY),
+            "moving_runs": run_values(runs, list(MOVING_TDS), _MOVING_BY)}
+
+
 BEYOND = 8
 """The number of the figure beyond the paper's seven: its planners with drones that report."""
 OTHERS = 9
@@ -303,6 +370,8 @@ RANGE_FIG = 10
 """The number of the figure of P_s against a continuous communication range."""
 RELAY_FIG = 11
 """The number of the figure of searchers and relays against the paper's planners."""
+MOVING_FIG = 12
+"""The number of the figure of the planners against a walking and a drifting target."""
 
 EXPERIMENTS = {e.name: e for e in (
     PaperExperiment("main", (2, 3, 4, 5, 6, BEYOND, OTHERS, RANGE_FIG, RELAY_FIG), _main,
@@ -312,6 +381,7 @@ EXPERIMENTS = {e.name: e for e in (
     PaperExperiment("report", (BEYOND, OTHERS), _report, _report_tables),
     PaperExperiment("others", (OTHERS,), _others, _others_tables),
     PaperExperiment("relays", (RELAY_FIG,), _relays, _relays_tables, quick_share=0.25),
+    PaperExperiment("moving", (MOVING_FIG,), _moving, _moving_tables, quick_share=0.25),
 )}
 """The sweeps, by folder name; ``main`` gives the tables ``main`` (``summarize`` at
 :data:`TD_SHORT`, :data:`TD_FIG3` and :data:`TD_LONG`), ``curve`` (``success_curve`` at
@@ -320,7 +390,11 @@ EXPERIMENTS = {e.name: e for e in (
 ``shadowing`` give theirs too); ``others`` the table ``others``, by ``on_detect`` too;
 ``relays`` the tables ``relays`` (by the relay count too) and ``relays_runs``, paired with
 ``main_runs`` run by run; under ``--quick`` it flies a quarter of the runs (25 of 100), since
-a relay run costs some ten plain ones at r_c = 500 m."""
+a relay run costs some ten plain ones at r_c = 500 m; ``moving`` the tables ``moving``
+(``summarize`` at :data:`MOVING_TDS` by target motion and delay too), ``moving_curve``
+(``success_curve`` at :data:`CURVE_TDS`) and ``moving_runs``, paired run by run between the
+motions; under ``--quick`` it too flies a quarter of the runs, so that its 48 points add
+little to the quick reproduction."""
 
 
 def plan_time_missions(iterations: int | None = None) -> list[Mission]:

@@ -32,6 +32,14 @@ from sarlink.paper.experiments import (
     DRONES,
     FIG2_DRONES,
     FIG5_RANGES,
+    MOTIONS,
+    MOVING_CURRENT,
+    MOVING_DELAYS,
+    MOVING_DRONES,
+    MOVING_FIG,
+    MOVING_RC,
+    MOVING_TDS,
+    MOVING_WIND,
     OTHERS,
     RANGE_DRONES,
     RANGE_FIG,
@@ -50,7 +58,7 @@ from sarlink.paper.experiments import (
 from sarlink.planners import PAPER_PLANNERS, get_planner, planner_names
 
 __all__ = ["FIGURES", "RELAYING", "FigureSpec", "fig1", "fig2", "fig3", "fig4", "fig5", "fig6",
-           "fig7", "fig8", "fig9", "fig10", "fig11", "network_values", "save"]
+           "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "network_values", "save"]
 
 _BAND = 0.15
 """Opacity of the interval bands: light enough for five to overlap legibly."""
@@ -90,7 +98,8 @@ def _header(measure: Measure) -> str:
 
 
 _KEYS = {"rc": "r_c (m)", "drones": "N_m", "td": "t_d (s)", "p_miss": "p_miss",
-         "planner": "planner", "on_detect": "on detection", "relays": "relays"}
+         "planner": "planner", "on_detect": "on detection", "relays": "relays",
+         "motion": "target", "delay": "delay (s)"}
 
 
 def _label(planner: str) -> str:
@@ -431,6 +440,33 @@ def fig11(main: pd.DataFrame, relays: pd.DataFrame, fig: Figure | None = None) -
     return fig
 
 
+MOTION_TITLES = {"still": "a still target (the paper's)", "walk": "a walking target",
+                 "drift": "a drifting target"}
+"""How Fig. :data:`MOVING_FIG` titles its panels, by target motion."""
+
+
+@_style()
+def fig12(moving_curve: pd.DataFrame, fig: Figure | None = None) -> Figure:
+    """Beyond the paper: P_s against t_d of the paper's planners and the IAMSAR patterns for
+    a still, a walking and a drifting target (a column each), N_m = 10, r_c = 500 m, a row per
+    delay from the last sighting to take-off."""
+    delays = [d for d in MOVING_DELAYS if d in set(moving_curve["delay"])]
+    fig, axes = _axes(fig, len(delays), len(MOTIONS))
+    planners = _planners(moving_curve)
+    for row, delay in zip(axes, delays, strict=True):
+        for ax, motion in zip(row, MOTIONS, strict=True):
+            rows = moving_curve[(moving_curve["motion"] == motion)
+                                & (moving_curve["delay"] == delay)]
+            _lines(ax, rows, "td", P_S, planners, markevery=5)
+            ax.set(title=f"{MOTION_TITLES[motion]}, delay {delay:g} s",
+                   xlabel="target duration $t_d$ (s)", xlim=(0, TD_LONG),
+                   xticks=np.arange(0, TD_LONG + 1, 1000))
+        for ax in row[1:]:
+            ax.set_ylabel("")
+    _legend(fig, planners)
+    return fig
+
+
 def save(fig: Figure, folder: Path, name: str) -> list[Path]:
     """Write ``name.png`` (200 dpi) and ``name.svg`` into ``folder`` and close the figure."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -449,7 +485,7 @@ def _values(rows: pd.DataFrame, keys: Sequence[str], measures: Sequence[Measure]
     """The plotted rows as text: the keys, then each measure with its interval."""
     rows = rows.sort_values(keys, key=_legend_order)
     out = pd.DataFrame({_KEYS[k]: rows[k].map(_label if k == "planner" else str
-                                              if k == "on_detect" else "{:g}".format)
+                                              if k in ("on_detect", "motion") else "{:g}".format)
                         for k in keys})
     for measure in measures:
         out[_header(measure)] = [measure.text(r) for _, r in rows.iterrows()]
@@ -535,6 +571,12 @@ def _fig11_values(main: pd.DataFrame, relays: pd.DataFrame) -> list[tuple[str, p
         rows, ["rc", "td", "drones", "relays", "planner"], [P_S]))]
 
 
+def _fig12_values(moving_curve: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    rows = moving_curve[moving_curve["td"].isin(MOVING_TDS)]
+    return [("P_s by target motion", _values(
+        rows, ["delay", "td", "motion", "planner"], [P_S]))]
+
+
 @dataclass(frozen=True)
 class FigureSpec:
     """A paper figure: what it shows, the summary tables it needs, how to draw it and the
@@ -598,6 +640,20 @@ FIGURES = {f.number: f for f in (
                "searching (dashed), on the same runs (run k of every line searches for the "
                f"same target); t_d = {RELAY_TDS[0]:g} and {RELAY_TDS[1]:g} s.",
                ("main", "relays"), fig11, _fig11_values),
+    FigureSpec(MOVING_FIG, "Beyond the paper: targets that move. P_s against t_d of the "
+               "paper's planners and the IAMSAR search patterns (solid, with 95% bands) for a "
+               "still target (the paper's), a walking one (0.5 m/s, a correlated random "
+               "heading, stopping after a log-normal time of median 4 h) and a person in the "
+               "water drifting under a constant wind of "
+               f"({MOVING_WIND[0]:g}, {MOVING_WIND[1]:g}) m/s and current of "
+               f"({MOVING_CURRENT[0]:g}, {MOVING_CURRENT[1]:g}) m/s (east, north; Leeway "
+               f"PIW-1; a drifter that leaves the square is not found), N_m = {MOVING_DRONES}, "
+               f"r_c = {MOVING_RC:g} m, the same runs (run k of every panel starts from the same "
+               "last-seen point); a row per delay from the last sighting to take-off "
+               f"({', '.join(f'{d:g}' for d in MOVING_DELAYS)} s; a still target ignores it, so "
+               "its panels agree). Its values: P_s at t_d = "
+               f"{', '.join(f'{td:g}' for td in MOVING_TDS)} s.", ("moving_curve",), fig12,
+               _fig12_values),
 )}
 """Every figure by its number in the paper, and :data:`BEYOND`, :data:`OTHERS`,
-:data:`RANGE_FIG` and :data:`RELAY_FIG` after them."""
+:data:`RANGE_FIG`, :data:`RELAY_FIG` and :data:`MOVING_FIG` after them."""

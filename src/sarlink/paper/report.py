@@ -27,6 +27,12 @@ from sarlink.paper.experiments import (
     BEYOND,
     CURVE_TDS,
     DRONES,
+    MOVING_CURRENT,
+    MOVING_DELAYS,
+    MOVING_DRONES,
+    MOVING_FIG,
+    MOVING_RC,
+    MOVING_WIND,
     OTHERS,
     P_MISS,
     RANGES,
@@ -43,6 +49,7 @@ from sarlink.paper.experiments import (
 )
 from sarlink.paper.figures import FIGURES, RELAYING, network_values
 from sarlink.paper.findings import CLAIMS, Finding, tally
+from sarlink.paper.moving import best_text, moving_points, moving_table, moving_text
 from sarlink.paper.relays import relay_points, relays_summary, relays_table, relays_text
 from sarlink.planners import PAPER_PLANNERS, get_planner
 
@@ -395,6 +402,33 @@ def _relays(tables: dict[str, pd.DataFrame]) -> list[_Block]:
         _Table(relays_table(points), f"Every point: the {len(points)} paired comparisons")]
 
 
+def _moving(tables: dict[str, pd.DataFrame]) -> list[_Block]:
+    if "moving_runs" not in tables:
+        return []
+    runs = tables["moving_runs"]
+    points = moving_points(runs)
+    labels = ", ".join(get_planner(p).label for p in dict.fromkeys(runs["planner"]))
+    wind, current = MOVING_WIND, MOVING_CURRENT
+    return [_Heading("Beyond the paper: targets that move", 2), _Para(
+        "The paper's target stays where it is drawn; the people SAR teams look for do not. "
+        f"Here {labels} search with N_m = {MOVING_DRONES} drones and r_c = {MOVING_RC:g} m "
+        "for a still target, a walking one (target.motion = walk with its defaults: 0.5 m/s, a "
+        "correlated random heading, stopping after a log-normal time of median 4 h) and a "
+        "person in the water (drift, Leeway class PIW-1) under a constant wind of "
+        f"({wind[0]:g}, {wind[1]:g}) m/s and current of ({current[0]:g}, {current[1]:g}) m/s "
+        "(east, north; docs/model.md, Target motion), which starts where it was last seen, "
+        "inside the square, and may drift out of it: then no drone finds it. The drones take "
+        "off when the target was last seen or "
+        f"{' or '.join(f'{d:g}' for d in MOVING_DELAYS[1:])} s later (target.delay), during "
+        f"which a moving target moves. Figure {MOVING_FIG} draws P_s against t_d; over "
+        f"{runs['run'].nunique()} runs per point, paired run by run (run k of every target "
+        "starts from the same last-seen point). Differences of P_s carry the paired 95% "
+        "interval of their discordant runs."),
+        _List([*moving_text(points), *best_text(runs)]),
+        _Table(moving_table(points),
+               f"Every point: the {len(points)} paired comparisons with a still target")]
+
+
 def _replay(out: Path, link: ReplayLink | None) -> list[_Block]:
     if link is None:
         return []
@@ -420,7 +454,7 @@ def _document(out: Path, *, runs: int, quick: bool, figures: dict[int, Path],
             *_network(tables),
             *_setting(runs, quick, reading),
             *_timing(seconds, stages, workers),
-            *_beyond(tables), *_others(tables), *_relays(tables),
+            *_beyond(tables), *_others(tables), *_relays(tables), *_moving(tables),
             *_figures(out, figures, tables),
             *_replay(out, replay)]
 

@@ -10,9 +10,10 @@ Layout of the output folder::
                            setting and machine
     tables/<name>.csv      summary tables (also .parquet): main, curve, miss, shadowing,
                            plan_times, mtsp_plans, report, report_curve, others (the
-                           planners beyond the paper), relays (searchers and relays), and
-                           sensitivity (claim × single change of the reading); main_runs,
-                           miss_runs, shadowing_runs, relays_runs (Parquet only): every
+                           planners beyond the paper), relays (searchers and relays),
+                           moving, moving_curve (targets that move), and sensitivity
+                           (claim × single change of the reading); main_runs, miss_runs,
+                           shadowing_runs, relays_runs, moving_runs (Parquet only): every
                            run's values, for the paired statistics
     figures/figN.png|svg   one figure per paper figure
     report.md, report.html the report (HTML self-contained)
@@ -179,10 +180,11 @@ def reproduce(out: str | Path, *, runs: int | None = None, quick: bool = False,
         Runs per grid point; default 2000 (the paper's), or 100 with ``quick``.
     quick
         Few runs: the trends in minutes, with wide intervals. The report says so. The sweep
-        of searchers and relays (Fig. 11), whose runs cost many plain ones, flies a quarter
-        of them (:attr:`~sarlink.paper.experiments.PaperExperiment.quick_share`).
+        of searchers and relays (Fig. 11), whose runs cost many plain ones, and that of
+        targets that move (Fig. 12) fly a quarter of them
+        (:attr:`~sarlink.paper.experiments.PaperExperiment.quick_share`).
     figures
-        Figure numbers to reproduce (the paper's 1–7, 8 to 11 beyond it); default all.
+        Figure numbers to reproduce (the paper's 1–7, 8 to 12 beyond it); default all.
     workers, scheduler
         As for :func:`sarlink.sweep`: local worker processes, or a Dask scheduler's address.
     progress
