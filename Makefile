@@ -58,7 +58,9 @@ lint: $(BIN)/sarlink
 	$(BIN)/mypy
 	$(BIN)/lint-imports --no-logo
 
-test: browser lint
+# The browser's download and the linters' CPU overlap; then every test.
+test: $(BIN)/sarlink
+	@$(MAKE) --no-print-directory -j2 browser lint
 	$(BIN)/pytest -q -n auto --dist loadfile
 
 docs: $(BIN)/sarlink
