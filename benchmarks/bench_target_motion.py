@@ -14,11 +14,10 @@ from __future__ import annotations
 
 import statistics
 import sys
-import time
 from pathlib import Path
 
 import results_file
-from sarlink import Mission, prepare
+from alternating import fly_alternately
 
 SEED = 2024
 CASES = {"still": {}, "walk, 1800 s delay": {"motion": "walk", "delay": 1800.0}}
@@ -26,18 +25,7 @@ CASES = {"still": {}, "walk, 1800 s delay": {"motion": "walk", "delay": 1800.0}}
 
 def main() -> None:
     runs = int(sys.argv[1]) if len(sys.argv) > 1 else 40
-    prepared = {name: prepare(Mission.build(planner="covb", drones=10, rc=1000.0, **params))
-                for name, params in CASES.items()}
-    for p in prepared.values():  # compile and warm
-        p.run(SEED, 0)
-    times: dict[str, list[float]] = {name: [] for name in CASES}
-    results: dict[str, list] = {name: [] for name in CASES}
-    for run in range(runs):
-        order = list(CASES)[:: 1 if run % 2 == 0 else -1]
-        for name in order:
-            start = time.perf_counter()
-            results[name].append(prepared[name].run(SEED, run))
-            times[name].append(time.perf_counter() - start)
+    times, results = fly_alternately(CASES, SEED, runs)
     still, walk = list(CASES)
     ratio = statistics.median(w / s for w, s in zip(times[walk], times[still], strict=True))
     lines = ["| target | median ms per run | P(detected by 4000 s) | P(notified by 4000 s) |",
