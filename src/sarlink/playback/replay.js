@@ -70,6 +70,21 @@
     return (Math.round(t * 1000) / 1000) + " s";
   }
 
+  /* a target's cross at p (screen), bold and ringed once it is found */
+  function cross(ctx, p, found) {
+    ctx.lineWidth = found ? 3.5 : 1.5;
+    ctx.beginPath();
+    ctx.moveTo(p[0] - 6, p[1] - 6); ctx.lineTo(p[0] + 6, p[1] + 6);
+    ctx.moveTo(p[0] + 6, p[1] - 6); ctx.lineTo(p[0] - 6, p[1] + 6);
+    ctx.stroke();
+    if (found) {
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.arc(p[0], p[1], 10, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+  }
+
   function Panel(scene, host) {
     this.scene = scene;
     this.run = decode(scene.frames);
@@ -338,17 +353,7 @@
     }
     const detected = s.tDetect !== null && run.t[k] >= s.tDetect;
     ctx.strokeStyle = COLOUR.target;
-    ctx.lineWidth = detected ? 3.5 : 1.5;
-    ctx.beginPath();
-    ctx.moveTo(target[0] - 6, target[1] - 6); ctx.lineTo(target[0] + 6, target[1] + 6);
-    ctx.moveTo(target[0] + 6, target[1] - 6); ctx.lineTo(target[0] - 6, target[1] + 6);
-    ctx.stroke();
-    if (detected) {
-      ctx.lineWidth = 1.5;
-      ctx.beginPath();
-      ctx.arc(target[0], target[1], 10, 0, 2 * Math.PI);
-      ctx.stroke();
-    }
+    cross(ctx, target, detected);
 
     /* the other targets of several: each one's track so far if it moves, its cross bold
        and ringed once it is found */
@@ -373,17 +378,7 @@
       }
       const p = where(k);
       const found = s.othersDetect[o] !== null && run.t[k] >= s.othersDetect[o];
-      ctx.lineWidth = found ? 3.5 : 1.5;
-      ctx.beginPath();
-      ctx.moveTo(p[0] - 6, p[1] - 6); ctx.lineTo(p[0] + 6, p[1] + 6);
-      ctx.moveTo(p[0] + 6, p[1] - 6); ctx.lineTo(p[0] - 6, p[1] + 6);
-      ctx.stroke();
-      if (found) {
-        ctx.lineWidth = 1.5;
-        ctx.beginPath();
-        ctx.arc(p[0], p[1], 10, 0, 2 * Math.PI);
-        ctx.stroke();
-      }
+      cross(ctx, p, found);
     });
 
     /* drones: fill by mode, a red ring when the drone knows the target, a heading tick */
