@@ -5,10 +5,12 @@ round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`
 
 1. **Smallest team.** For each planner variant, team sizes are probed on a doubling ladder
    from the smallest considered (1, 2, 4, ..., the largest; a variant with ``k`` fixed relays
-   starts at ``k + 1``, one searcher beside them); once a size meets the requirement, or the
-   ladder is decided, every smaller size is opened. A size meets when one of its settings
-   does; it fails when all do. Sizes above the smallest that meets are never run again. The
-   ladder only orders the work: the answer does not assume that ``P_s`` grows with the team.
+   starts at ``k + 1``, one searcher beside them), climbed one rung at a time: a probe gets
+   runs once every smaller probe is decided (for the recommendation alone, every smaller
+   probe of every variant). Once a size meets the requirement, or the ladder is decided,
+   every smaller size is opened. A size meets when one of its settings does; it fails when
+   all do. Sizes above the smallest that meets are never run again. The ladder only orders
+   the work: the answer does not assume that ``P_s`` grows with the team.
    For the recommendation alone (``every_planner`` off), sizes above the smallest that meets
    for *any* variant are never run again either: the recommendation is the smallest team
    overall, so no larger one can be it (that size itself stays open to every variant, whose
@@ -242,17 +244,35 @@ class _Search:
             return None
         return min(filter(None, map(self.smallest, self.cells)), default=None)
 
-    def active(self, variant: PlannerVariant) -> list[_Cell]:
-        """The open cells of ``variant`` worth runs now (see the module docstring)."""
+    def below(self, variant: PlannerVariant) -> range:
+        """The sizes of ``variant`` that can still be the answer: below its smallest that
+        meets, and for the recommendation alone up to the smallest that meets for any."""
         team = self.request.sizes(variant)
         smallest = self.smallest(variant)
         below = team if smallest is None else range(team.start, smallest)
         ceiling = self.ceiling()
-        if ceiling is not None:
-            below = range(below.start, min(below.stop, ceiling + 1))
-        probes = [n for n in _ladder(team) if n in below]
-        ladder_done = all(self.cell(variant, n).verdict is not Decision.OPEN for n in probes)
-        sizes = below if smallest is not None or ladder_done else probes
+        return below if ceiling is None else range(below.start, min(below.stop, ceiling + 1))
+
+    def open_probes(self, variant: PlannerVariant) -> list[int]:
+        """The ladder's probes of ``variant`` that can still be the answer and are open."""
+        return [n for n in _ladder(self.request.sizes(variant)) if n in self.below(variant)
+                and self.cell(variant, n).verdict is Decision.OPEN]
+
+    def rung(self, variant: PlannerVariant) -> int | None:
+        """The ladder's rung worth runs now: the smallest open probe (for the recommendation
+        alone, of any variant; else of ``variant``), so that the ladder is climbed one rung
+        at a time and no size above the first that meets is run (None: no probe open)."""
+        scope = [variant] if self.request.every_planner else list(self.cells)
+        return min((n for v in scope for n in self.open_probes(v)), default=None)
+
+    def active(self, variant: PlannerVariant) -> list[_Cell]:
+        """The open cells of ``variant`` worth runs now (see the module docstring)."""
+        probes = self.open_probes(variant)
+        if self.smallest(variant) is not None or not probes:  # fill in below
+            sizes: Sequence[int] = self.below(variant)
+        else:
+            rung = self.rung(variant)
+            sizes = [n for n in probes if rung is not None and n <= rung]
         return [c for n in sizes if (c := self.cell(variant, n)).verdict is Decision.OPEN]
 
     def find_smallest(self) -> None:
