@@ -110,3 +110,18 @@ def test_the_live_view_is_told_the_best_candidate_after_every_round() -> None:
     last = seen[-1].best
     assert last is not None and final.recommendation is not None
     assert last == final.recommendation.chosen
+
+
+def test_the_ladder_is_climbed_one_rung_at_a_time(answers: list[DesignAnswer]) -> None:
+    """No team larger than the smallest that meets gets a run: for the recommendation alone,
+    none above mTSP's 2 from any planner (the old all-at-once ladder ran covb's 4 and 5);
+    for every planner, none above each one's own smallest (covb's 5, mTSP's 4 and 5)."""
+    at_two = [a for a in answers if a.recommendation is not None
+              and a.recommendation.smallest == 2]
+    assert len(at_two) >= 0.9 * REPEATS
+    for a in at_two:
+        assert max(t.drones for p in a.planners for t in p.team_sizes) == 2
+    for seed in range(5):
+        every = answer(seed, every_planner=True)
+        assert {p.planner: max(t.drones for t in p.team_sizes) for p in every.planners} == {
+            "covb": 4, "mtsp": 2}
