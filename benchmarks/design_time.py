@@ -210,10 +210,9 @@ def write(state: dict[str, Any], out: Path) -> None:
              "(runs, mTSP plans, Numba's compiled kernels: compiles are included), on this "
              "machine, under `nice -n 10`, default workers (one per core); sides measured in "
              "separate calls (`--side old`, `--side new`) may overlap, and then competed for "
-             "the cores (see their start times and wall times). The machine was shared with "
-             "other work throughout (load average sampled "
-             "every 30 s below; 2 cores): wall times depend on that load, CPU seconds (the "
-             "design's process and its workers) much less, and are the fairer comparison.",
+             "the cores (see their start times and wall times). The load average, sampled "
+             f"every 30 s, is below ({os.cpu_count()} cores): wall times depend on it, CPU "
+             "seconds (the design's process and its workers) much less.",
              "",
              "| side | started | wall, s | CPU, s | load average (min / mean / max) | runs used "
              "| mTSP plans solved | their solve time, s (wall, summed) | recommendation "
