@@ -14,7 +14,9 @@ runs (another seed) of the mission it recommends, by the working tree's code. Ru
 
 The old design takes tens of minutes: ``--side old`` or ``--side new`` measures one side and
 keeps it in ``--state`` (JSON), so the two can be measured in two calls; the results file is
-written once the state holds both (``--side none``: from the state alone).
+written once the state holds both (``--side none``: from the state alone). After the new
+side, the compile of every planner's kernel from an empty cache is timed apart (``--side
+compiles``: that alone), the fixed part of a first design on a machine.
 """
 
 from __future__ import annotations
@@ -74,6 +76,23 @@ def run_side(label: str, src: Path, workdir: Path, workers: int | None) -> dict[
             "started": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(time.time() - wall)),
             "answer": json.loads(done.stdout),
             "breakdown": breakdown(workdir / "runs", workdir / "cache")}
+
+
+WARM = ("from sarlink.planners import planner_names\n"
+        "from sarlink.simulation import warm_up\n"
+        "for planner in planner_names():\n"
+        "    warm_up(planner, 'disc')\n")
+"""Compile the kernel of every planner the design tries (patterns share one), one process."""
+
+
+def compiles(src: Path, workdir: Path) -> float:
+    """CPU seconds that compiling the kernels of every planner takes from an empty cache: the
+    fixed part of a design's time on a machine that has never run one."""
+    env = {**os.environ, "PYTHONPATH": str(src), "SARLINK_CACHE_DIR": str(workdir / "cache"),
+           "NUMBA_CACHE_DIR": str(workdir / "numba")}
+    before = _children_cpu()
+    subprocess.run([sys.executable, "-c", WARM], env=env, check=True)
+    return _children_cpu() - before
 
 
 def _children_cpu() -> float:
@@ -157,8 +176,9 @@ def _alive(folder: Path) -> bool:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("rev", help="the git revision to compare with (today's main)")
-    parser.add_argument("--side", choices=("old", "new", "both", "none"), default="both",
-                        help="the side to measure; none: only check and write from --state")
+    parser.add_argument("--side", choices=("old", "new", "both", "compiles", "none"),
+                        default="both", help="the side to measure; compiles: only the "
+                        "compile time; none: only check and write from --state")
     parser.add_argument("--state", type=Path, default=Path("benchmarks/results/design-time.json"))
     parser.add_argument("--workers", type=int, default=None)
     parser.add_argument("--no-check", action="store_true",
@@ -188,6 +208,9 @@ def main() -> None:
         if args.side in ("new", "both"):
             state["new"] = run_side(f"working tree ({results_file.COMMIT})",
                                     results_file.ROOT / "src", root / "new", args.workers)
+            args.state.write_text(json.dumps(state, indent=1))
+        if args.side in ("new", "both", "compiles") and "new" in state:
+            state["new"]["compiles"] = compiles(results_file.ROOT / "src", root / "compiles")
             args.state.write_text(json.dumps(state, indent=1))
     if args.unfinished is not None:
         state["old"] = unfinished(args.unfinished, f"{args.rev} (still running)")
@@ -242,6 +265,12 @@ def write(state: dict[str, Any], out: Path) -> None:
     lines += ["",
               f"Speed-up: {least}{old['wall'] / new['wall']:.1f}x in wall time, "
               f"{least}{old['cpu'] / new['cpu']:.1f}x in CPU time.",
+              "",
+              "" if "compiles" not in new else
+              "Of each side's CPU time, compiling the engine's kernels is a fixed part: every "
+              f"planner's kernel from an empty cache takes {new['compiles']:.0f} CPU seconds "
+              "(the working tree's, measured apart in one process); a machine that has run "
+              "sarlink before loads them from its cache.",
               "",
               "" if checked else "The 1000-run check was not run for this file (`--no-check`).",
               "",
