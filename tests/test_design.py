@@ -180,12 +180,21 @@ def test_each_candidate_folder_is_a_sweep_of_its_mission(
 
 
 def test_the_answer_is_the_same_with_one_and_two_workers(tmp_path: Path) -> None:
+    """And with both cores busy: two processes spinning beside the design's workers."""
     request = DesignRequest(mission=SMALL, td=600.0, ps=0.6, planners=("covb",),
                             options=PAPER, max_drones=3, candidate_runs=200)
     one = design(request, tmp_path / "one", workers=1, progress=False)
     two = design(request, tmp_path / "two", workers=2, progress=False)
     assert one.runs_simulated == two.runs_simulated == one.runs_used > 0
     assert one.to_json() == two.to_json()
+    spinners = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(2)]
+    try:
+        busy = design(request, tmp_path / "busy", workers=2, progress=False)
+    finally:
+        for spinner in spinners:
+            spinner.kill()
+            spinner.wait()
+    assert busy.to_json() == one.to_json()
 
 
 def test_a_time_budget_stops_between_rounds_at_the_answer_of_those_runs(
