@@ -30,10 +30,12 @@ and no team of 3 meets it (0.88 and 0.5 are below)."""
 
 
 class DrawnRuns:
-    """Runs of missions drawn from :data:`TRUE_PS` with uniforms from ``seed``."""
+    """Runs of missions drawn from ``table`` (:data:`TRUE_PS`) with uniforms from ``seed``."""
 
-    def __init__(self, seed: int, cap: int) -> None:
+    def __init__(self, seed: int, cap: int,
+                 table: dict[str, tuple[float, ...]] = TRUE_PS) -> None:
         self.uniform = np.random.default_rng(seed).random(cap)
+        self.table = table
         self.tallies: dict[str, Tally] = {}
         self.simulated = 0
 
@@ -42,7 +44,7 @@ class DrawnRuns:
 
     def grow(self, wanted: Sequence[tuple[Mission, int]]) -> None:
         for mission, runs in wanted:
-            p = TRUE_PS[mission.team.planner][mission.team.drones - 1]
+            p = self.table[mission.team.planner][mission.team.drones - 1]
             success = self.uniform[:runs] < p
             self.simulated += runs - self.tally(mission).runs
             self.tallies[mission_hash(mission)] = Tally(
@@ -125,3 +127,27 @@ def test_the_ladder_is_climbed_one_rung_at_a_time(answers: list[DesignAnswer]) -
         every = answer(seed, every_planner=True)
         assert {p.planner: max(t.drones for t in p.team_sizes) for p in every.planners} == {
             "covb": 4, "mtsp": 2}
+
+
+OUTRANKED_PS = {"mtsp": (0.1, 0.97, 0.97), "covb": (0.2, 0.9, 0.95)}
+"""mTSP meets at 2; CovB's 2 sits on the requirement (borderline to the cap on its own) but
+below mTSP's 2, so it cannot be recommended."""
+
+
+def test_a_candidate_worse_than_the_recommendation_at_its_size_is_outranked() -> None:
+    """For the recommendation alone, CovB's 2 stops getting runs once its upper bound on
+    ``P_s`` is below mTSP's estimate at 2 (its planner is "outranked"); asked for every
+    planner, CovB's 2 runs to the cap."""
+    alone_request = request(False).model_copy(update={"max_drones": 3})
+    every_request = request(True).model_copy(update={"max_drones": 3})
+    for seed in range(20):
+        alone = search(alone_request, DrawnRuns(seed, 1600, OUTRANKED_PS))  # type: ignore[arg-type]
+        assert alone.recommendation is not None and alone.recommendation.planner == "mtsp"
+        assert alone.recommendation.smallest == 2
+        covb = next(p for p in alone.planners if p.planner == "covb")
+        at_two = next(t for t in covb.team_sizes if t.drones == 2)
+        assert covb.status == "outranked" and covb.undecided == ()
+        assert at_two.verdict == "outranked" and at_two.best.runs <= 400
+    every = search(every_request, DrawnRuns(0, 1600, OUTRANKED_PS))  # type: ignore[arg-type]
+    covb = next(p for p in every.planners if p.planner == "covb")
+    assert next(t for t in covb.team_sizes if t.drones == 2).best.runs == 1600

@@ -90,7 +90,8 @@ class PlannerAnswer:
     status: str
     """``reached``, ``not reachable`` (every team size fails), ``undecided``, or for the
     recommendation alone ``larger`` (every size up to the recommended team fails; larger
-    ones were not tried)."""
+    ones were not tried) or ``outranked`` (every size below the recommended team fails, and
+    at it the planner is shown less successful than the recommendation)."""
     smallest: int | None
     chosen: CandidateEstimate | None
     """The candidate at the smallest team, at its best setting."""

@@ -10,7 +10,11 @@ round grows to its next look of the :class:`~sarlink.design.sequential.Schedule`
    probe of every variant). Once a size meets the requirement, or the ladder is decided,
    every smaller size is opened. A size meets when one of its settings does; it fails when
    all do. Sizes above the smallest that meets are never run again. The ladder only orders
-   the work: the answer does not assume that ``P_s`` grows with the team.
+   the work: the answer does not assume that ``P_s`` grows with the team. For the
+   recommendation alone, an open candidate at the smallest team that meets for any variant
+   gets no more runs once its exact upper bound on ``P_s`` (at ``δ/K`` per look) is below
+   the estimate of the best candidate that meets there: it is *outranked*, since only the
+   most successful of that size can be recommended.
    For the recommendation alone (``every_planner`` off), sizes above the smallest that meets
    for *any* variant are never run again either: the recommendation is the smallest team
    overall, so no larger one can be it (that size itself stays open to every variant, whose
@@ -47,7 +51,14 @@ from sarlink.design.answer import CandidateEstimate, DesignAnswer, PlannerAnswer
 from sarlink.design.candidates import Candidate, PlannerVariant, refinements
 from sarlink.design.request import DesignRequest
 from sarlink.design.runs import Runs, Tally
-from sarlink.design.sequential import Decision, Schedule, decide, not_worse_by, worse
+from sarlink.design.sequential import (
+    Decision,
+    Schedule,
+    decide,
+    not_worse_by,
+    upper_bound,
+    worse,
+)
 
 __all__ = ["Errors", "Snapshot", "errors", "search"]
 
@@ -122,7 +133,10 @@ class _Cell:
             return Decision.MEETS
         if verdicts == {Decision.FAILS}:
             return Decision.FAILS
-        return Decision.OPEN if Decision.OPEN in verdicts else Decision.BORDERLINE
+        for verdict in (Decision.OPEN, Decision.BORDERLINE):
+            if verdict in verdicts:
+                return verdict
+        return Decision.OUTRANKED  # outranked, or failed
 
 
 def _value(arm: _Arm) -> float | int:
@@ -291,9 +305,30 @@ class _Search:
             complete = self.spend([(arm, n) for _, arm, n in wanted])
             for cell, arm, _ in wanted:
                 self.judge(arm, cell)
+            self.outrank()
             self.report()
             if not complete:
                 return
+
+    def outrank(self) -> None:
+        """For the recommendation alone, set aside each open candidate at the smallest team
+        that meets whose exact upper bound on ``P_s`` (at ``δ/K`` per look) is below the
+        estimate of the best candidate that meets there: the recommendation is the most
+        successful of that size, so it cannot be."""
+        ceiling = self.ceiling()
+        if ceiling is None:
+            return
+        cells = [cells[ceiling] for cells in self.cells.values() if ceiling in cells]
+        best = max(self.tally(a).p for c in cells for a in c.arms
+                   if a.verdict is Decision.MEETS)
+        for cell in cells:
+            if cell.verdict is not Decision.OPEN:  # a size that meets races its own settings
+                continue
+            for arm in cell.arms:
+                tally = self.tally(arm)
+                if arm.verdict is Decision.OPEN and tally.runs and upper_bound(
+                        tally.successes, tally.runs, cell.errors.fails) < best:
+                    arm.verdict = Decision.OUTRANKED
 
     # -- phase 2: the best setting ------------------------------------------------------------
 
@@ -381,8 +416,8 @@ class _Search:
         ceiling = self.ceiling()
         tried = sizes.stop if ceiling is None else min(sizes.stop, ceiling + 1)
         limit = tried if smallest is None else smallest
-        undecided = tuple(n for n in range(sizes.start, limit)
-                          if n not in cells or cells[n].verdict is not Decision.FAILS)
+        undecided = tuple(n for n in range(sizes.start, limit) if n not in cells
+                          or cells[n].verdict not in (Decision.FAILS, Decision.OUTRANKED))
         chosen = None
         if smallest is not None:
             meets = [a for a in cells[smallest].arms if a.verdict is Decision.MEETS]
@@ -390,8 +425,9 @@ class _Search:
                       if tuning is None else tuning.best)
             status = "reached"
         else:
-            status = ("undecided" if undecided else "not reachable" if tried == sizes.stop
-                      else "larger")
+            outranked = ceiling in cells and cells[ceiling].verdict is Decision.OUTRANKED
+            status = ("undecided" if undecided else "outranked" if outranked
+                      else "not reachable" if tried == sizes.stop else "larger")
         held = variant.own if variant.split else None
         return PlannerAnswer(variant.planner, variant.label, dict(variant.fixed), status,
                              smallest, chosen, undecided, team_sizes, tuning,

@@ -62,6 +62,10 @@ class Decision(enum.StrEnum):
     """Not decided yet: more runs may decide."""
     BORDERLINE = "borderline"
     """Not decided at the cap: ``P_s`` is too close to the requirement to tell."""
+    OUTRANKED = "outranked"
+    """Not decided, and set aside: at the smallest team that meets, its upper bound on
+    ``P_s`` is below the estimate of the best candidate that meets there, so it cannot be
+    the recommendation (the recommendation alone)."""
 
 
 def lower_bound(successes: int, runs: int, error: float) -> float:
