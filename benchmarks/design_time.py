@@ -54,12 +54,22 @@ def _load_sampler(samples: list[float], stop: threading.Event) -> threading.Thre
     return thread
 
 
+WARM = ("from sarlink.planners import planner_names\n"
+        "from sarlink.simulation import warm_up\n"
+        "for planner in planner_names():\n"
+        "    warm_up(planner, 'disc')\n")
+"""Compile the kernel of every planner the design tries (patterns share one), one process."""
+
+
 def run_side(label: str, src: Path, workdir: Path, workers: int | None,
-             runs: str = "runs") -> dict[str, Any]:
-    """Run the design from ``src`` with the caches in ``workdir`` (empty on a first call) and
-    an empty runs folder ``runs``; its wall and CPU seconds and answer."""
+             runs: str = "runs", warm: bool = False) -> dict[str, Any]:
+    """Run the design from ``src`` with the caches in ``workdir`` (empty on a first call,
+    unless ``warm``: every planner's kernel compiled first, untimed) and an empty runs folder
+    ``runs``; its wall and CPU seconds and answer."""
     env = {**os.environ, "PYTHONPATH": str(src), "SARLINK_CACHE_DIR": str(workdir / "cache"),
            "NUMBA_CACHE_DIR": str(workdir / "numba")}
+    if warm:
+        subprocess.run([sys.executable, "-c", WARM], env=env, check=True)
     extra = [] if workers is None else ["--workers", str(workers)]
     cmd = [sys.executable, "-c", "from sarlink.cli import app; app()", "design", *REQUEST,
            "--json", "--quiet", "--out", str(workdir / runs), *extra]
@@ -75,17 +85,10 @@ def run_side(label: str, src: Path, workdir: Path, workers: int | None,
     sampler.join()
     if done.returncode != 0:
         raise SystemExit(f"{label}: design failed ({done.returncode}):\n{done.stderr[-3000:]}")
-    return {"label": label, "wall": wall, "cpu": cpu, "load": samples,
+    return {"label": label, "wall": wall, "cpu": cpu, "load": samples, "warm": warm,
             "started": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(time.time() - wall)),
             "answer": json.loads(done.stdout),
             "breakdown": breakdown(workdir / runs, workdir / "cache")}
-
-
-WARM = ("from sarlink.planners import planner_names\n"
-        "from sarlink.simulation import warm_up\n"
-        "for planner in planner_names():\n"
-        "    warm_up(planner, 'disc')\n")
-"""Compile the kernel of every planner the design tries (patterns share one), one process."""
 
 
 def compiles(src: Path, workdir: Path) -> float:
@@ -184,6 +187,9 @@ def main() -> None:
                         "compile time; none: only check and write from --state")
     parser.add_argument("--state", type=Path, default=Path("benchmarks/results/design-time.json"))
     parser.add_argument("--workers", type=int, default=None)
+    parser.add_argument("--warm", action="store_true",
+                        help="compile each side's kernels before timing it (a machine that "
+                             "has run sarlink before)")
     parser.add_argument("--no-check", action="store_true",
                         help="skip the 1000-run check of each recommendation")
     parser.add_argument("--unfinished", type=int, default=None, metavar="PID",
@@ -203,14 +209,15 @@ def main() -> None:
                                      cwd=results_file.ROOT, check=True, capture_output=True,
                                      text=True).stdout.strip()
                 state["old"] = run_side(f"{args.rev} ({rev})", tree / "src", root / "old",
-                                        args.workers)
+                                        args.workers, warm=args.warm)
             finally:
                 subprocess.run(["git", "worktree", "remove", "--force", str(tree)],
                                cwd=results_file.ROOT, check=False, capture_output=True)
             args.state.write_text(json.dumps(state, indent=1))
         if args.side in ("new", "both"):
             state["new"] = run_side(f"working tree ({results_file.COMMIT})",
-                                    results_file.ROOT / "src", root / "new", args.workers)
+                                    results_file.ROOT / "src", root / "new", args.workers,
+                                    warm=args.warm)
             warm = run_side("again", results_file.ROOT / "src", root / "new", args.workers,
                             runs="runs-again")
             state["new"]["again"] = {"wall": warm["wall"], "cpu": warm["cpu"]}
@@ -236,8 +243,11 @@ def write(state: dict[str, Any], out: Path) -> None:
                                  "the working tree"),
              f"Request: `sarlink design {' '.join(REQUEST)}` (every planner, with and without "
              "reporting drones, up to 22 drones, seed 2024), each side from empty folders "
-             "(runs, mTSP plans, Numba's compiled kernels: compiles are included), on this "
-             "machine, under `nice -n 10`, default workers (one per core); sides measured in "
+             + ("(runs, mTSP plans) but with every planner's kernel compiled first, untimed "
+                "(`--warm`: a machine that has run sarlink before), on this "
+                if old.get("warm") and new.get("warm") else
+                "(runs, mTSP plans, Numba's compiled kernels: compiles are included), on this ")
+             + "machine, under `nice -n 10`, default workers (one per core); sides measured in "
              "separate calls (`--side old`, `--side new`) may overlap, and then competed for "
              "the cores (see their start times and wall times). The load average, sampled "
              f"every 30 s, is below ({os.cpu_count()} cores): wall times depend on it, CPU "
