@@ -96,7 +96,8 @@ class PlannerAnswer:
     chosen: CandidateEstimate | None
     """The candidate at the smallest team, at its best setting."""
     undecided: tuple[int, ...]
-    """Smaller team sizes that stayed borderline or open: the true smallest may be one."""
+    """Smaller team sizes that stayed borderline or open, or were outranked below this
+    planner's smallest: the true smallest may be one."""
     team_sizes: tuple[TeamSize, ...]
     tuning: Tuning | None
     held: dict[str, Any]

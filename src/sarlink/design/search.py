@@ -416,8 +416,12 @@ class _Search:
         ceiling = self.ceiling()
         tried = sizes.stop if ceiling is None else min(sizes.stop, ceiling + 1)
         limit = tried if smallest is None else smallest
-        undecided = tuple(n for n in range(sizes.start, limit) if n not in cells
-                          or cells[n].verdict not in (Decision.FAILS, Decision.OUTRANKED))
+        # an outranked size cannot be the recommendation, but it may still be this planner's
+        # smallest when a larger size of it meets
+        settled = (Decision.FAILS,) if smallest is not None else (Decision.FAILS,
+                                                                   Decision.OUTRANKED)
+        undecided = tuple(n for n in range(sizes.start, limit)
+                          if n not in cells or cells[n].verdict not in settled)
         chosen = None
         if smallest is not None:
             meets = [a for a in cells[smallest].arms if a.verdict is Decision.MEETS]
