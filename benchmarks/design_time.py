@@ -61,13 +61,18 @@ WARM = ("from sarlink.planners import planner_names\n"
 """Compile the kernel of every planner the design tries (patterns share one), one process."""
 
 
+def _env(src: Path, workdir: Path) -> dict[str, str]:
+    """The environment of a side: its ``src`` first, its caches in ``workdir``."""
+    return {**os.environ, "PYTHONPATH": str(src), "SARLINK_CACHE_DIR": str(workdir / "cache"),
+            "NUMBA_CACHE_DIR": str(workdir / "numba")}
+
+
 def run_side(label: str, src: Path, workdir: Path, workers: int | None,
              runs: str = "runs", warm: bool = False) -> dict[str, Any]:
     """Run the design from ``src`` with the caches in ``workdir`` (empty on a first call,
     unless ``warm``: every planner's kernel compiled first, untimed) and an empty runs folder
     ``runs``; its wall and CPU seconds and answer."""
-    env = {**os.environ, "PYTHONPATH": str(src), "SARLINK_CACHE_DIR": str(workdir / "cache"),
-           "NUMBA_CACHE_DIR": str(workdir / "numba")}
+    env = _env(src, workdir)
     if warm:
         subprocess.run([sys.executable, "-c", WARM], env=env, check=True)
     extra = [] if workers is None else ["--workers", str(workers)]
@@ -94,10 +99,8 @@ def run_side(label: str, src: Path, workdir: Path, workers: int | None,
 def compiles(src: Path, workdir: Path) -> float:
     """CPU seconds that compiling the kernels of every planner takes from an empty cache: the
     fixed part of a design's time on a machine that has never run one."""
-    env = {**os.environ, "PYTHONPATH": str(src), "SARLINK_CACHE_DIR": str(workdir / "cache"),
-           "NUMBA_CACHE_DIR": str(workdir / "numba")}
     before = _children_cpu()
-    subprocess.run([sys.executable, "-c", WARM], env=env, check=True)
+    subprocess.run([sys.executable, "-c", WARM], env=_env(src, workdir), check=True)
     return _children_cpu() - before
 
 
