@@ -542,7 +542,7 @@ def _band_links(px: np.ndarray, py: np.ndarray, pz: np.ndarray, fade: np.ndarray
     return toggled
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def scan_step(k: int, ci: int, p: Params, cp_steps: np.ndarray, px: np.ndarray,
               py: np.ndarray, pz: np.ndarray, fade: np.ndarray, detected: bool,
               sensed: np.ndarray, mode: np.ndarray, spread: np.ndarray, stack: np.ndarray,

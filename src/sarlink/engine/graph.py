@@ -75,7 +75,7 @@ def linked(adj: np.ndarray, a: int, b: int) -> bool:
     return (adj[a, b >> 6] >> np.uint64(b & 63)) & _ONE != 0
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def links(
     px: np.ndarray, py: np.ndarray, pz: np.ndarray, thr2: np.ndarray, adj: np.ndarray,
     r2: float, near: np.ndarray, with_near: bool,
@@ -154,7 +154,7 @@ def component(adj: np.ndarray, tg: int, out: np.ndarray, stack: np.ndarray) -> N
     drop(out, tg)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) -> None:
     """``out``: the nodes (drones and the BS, node n) with a multihop route to the BS."""
     out[:] = 0
@@ -162,7 +162,7 @@ def bs_component(adj: np.ndarray, n: int, out: np.ndarray, stack: np.ndarray) ->
     component(adj, n + 1, out, stack)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def flood(adj: np.ndarray, routed: np.ndarray, knows: np.ndarray, spread: np.ndarray,
           stack: np.ndarray) -> bool:
     """Pass the target's location from every drone that knows it to everyone it reaches, over
@@ -197,7 +197,7 @@ def part_of_bs(parked: int, mode: int) -> bool:
     return parked == _BASE and mode == _LANDED
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def reachability(adj: np.ndarray, routed: np.ndarray, mode: np.ndarray, how: int = _DIRECT,
                  parked: int = _RELAY) -> tuple[bool, int]:
     """Whether the target has a route to the BS, and how many drones have one.

@@ -22,7 +22,7 @@ from sarlink.engine.params import LANDED, PER_PERIOD, Params
 _FIRST = int(Success.FIRST)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def sense(tx: np.ndarray, ty: np.ndarray, px: np.ndarray, py: np.ndarray, k: int, t: float,
           p: Params, in_range: np.ndarray, pass_start: np.ndarray, known: np.ndarray,
           t_det: np.ndarray, detector: np.ndarray, rng: np.random.Generator) -> None:
@@ -72,7 +72,7 @@ def label(adj: np.ndarray, n: int, comp: np.ndarray, unseen: np.ndarray,
                 top = graph.push_new(stack, top, w, new)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def flood(adj: np.ndarray, known: np.ndarray, t_det: np.ndarray,
           t_not: np.ndarray, t: float, knows: np.ndarray, spread: np.ndarray,
           comp: np.ndarray, reached: np.ndarray, unseen: np.ndarray,
@@ -105,7 +105,7 @@ def flood(adj: np.ndarray, known: np.ndarray, t_det: np.ndarray,
                 graph.add(spread, n)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def event(times: np.ndarray, success: int) -> int:
     """The target whose event time (``-1``: not yet) is the mission's: the earliest under
     ``first``, the latest once every target's has happened under ``all``; the lowest index
@@ -121,7 +121,7 @@ def event(times: np.ndarray, success: int) -> int:
     return best
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def settled(mode: np.ndarray, in_range: np.ndarray, known: np.ndarray, look: int) -> bool:
     """:func:`records.settled` for every target: every drone has landed, and none still looks
     for a target in its range that it does not know (only per-period looks repeat)."""

@@ -201,7 +201,7 @@ def fly_route(
             return
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def move(p: Params, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
          mode: np.ndarray, on_route: np.ndarray, wp: np.ndarray, wp_next: np.ndarray,
          wp_end: np.ndarray, leave_x: np.ndarray, leave_y: np.ndarray,

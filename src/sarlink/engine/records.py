@@ -124,7 +124,7 @@ def new_track(steps: int, n: int, nw: int, position_steps: int = 0) -> Track:
                  np.empty((steps, n + 2, nw), dtype=np.uint64))
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def record_step(k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.ndarray,
                 routed: np.ndarray, knows: np.ndarray, mode: np.ndarray, adj: np.ndarray,
                 positions: np.ndarray, headings: np.ndarray, track_knows: np.ndarray,
@@ -144,7 +144,7 @@ def record_step(k: int, px: np.ndarray, py: np.ndarray, hx: np.ndarray, hy: np.n
     links[k] = adj
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def record_positions(k: int, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
                      positions: np.ndarray, track_mode: np.ndarray) -> None:
     """Store the drones' positions and modes of step ``k`` (a traced run, see
@@ -155,7 +155,7 @@ def record_positions(k: int, px: np.ndarray, py: np.ndarray, mode: np.ndarray,
         track_mode[k, i] = mode[i]
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def take_checkpoints(k: int, cp_steps: np.ndarray, ci: int, reach_cum: np.ndarray,
                      conn_cum: np.ndarray, acc_reach: float, acc_conn: float) -> int:
     """Record the sums so far at every checkpoint of step ``k``; return the next checkpoint."""
@@ -231,7 +231,7 @@ def carry_records(start: int, n_steps: int, cp_steps: np.ndarray, ci: int, reach
         acc_conn += d_conn
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def settled(mode: np.ndarray, in_range: np.ndarray, knows: np.ndarray, look: int) -> bool:
     """Whether no later step can differ from this one: every drone has landed, and none in
     sensing range still looks for the target (only per-period looks repeat in place)."""
