@@ -30,7 +30,8 @@ left (a route drone back to where it left its route). The powers are the energy 
 A walking target (``target.motion = walk``, docs/model.md, Target motion) walks here from the
 model's text: the heading's normal turn each step, the log-normal time it stops, the uniform
 headings drawn again until a step stays in the square, and its walk during ``target.delay``
-before take-off; it moves after the drones, so each step senses it where it is then. A
+before take-off; it moves after the drones, once every ``target.motion_step`` seconds by the
+walk of that time, so each step senses it where it is then. A
 drifting target (``drift``) drifts here from the same text: its Leeway fit drawn once, the
 wind and current read from their tables at the step's start, the jibe after the step.
 
@@ -253,12 +254,22 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
     motion = MOVERS.get(mission.target.motion)
     mover = motion(mission, streams.target) if motion else None
     delay = round(mission.target.delay / dt) if mover else 0
+    # a moving target's own time step: it moves at the end of each step g since the sighting
+    # at which every·dt has passed since its last move, for that time, and stands in between
+    every = max(1, round(mission.target.motion_step / dt))
+
+    def ends_a_move(g: int) -> bool:
+        return (g + 1) % every == 0
+
     for j in range(delay):
-        assert mover is not None
-        target = mover.move(target, j * dt, dt)
+        if ends_a_move(j):
+            assert mover is not None
+            target = mover.move(target, (j + 1 - every) * dt, every * dt)
     movers = [motion(mission, streams.targets) for _ in others] if motion else []
     for j in range(delay):
-        others = [m.move(o, j * dt, dt) for m, o in zip(movers, others, strict=True)]
+        if ends_a_move(j):
+            others = [m.move(o, (j + 1 - every) * dt, every * dt)
+                      for m, o in zip(movers, others, strict=True)]
     track = []
     tracks = []
 
@@ -798,10 +809,10 @@ def simulate_naive(mission: Mission, seed: int, run: int, record: bool = False,
                     drawn += descent if mode[i] == "landed" else 0.0
                     energy[i] -= drawn
                     used[i] += drawn
-        if mover is not None:  # the target moves last, the others after it
-            target = mover.move(target, (delay + k) * dt, dt)
-            others = [m.move(o, (delay + k) * dt, dt) for m, o in zip(movers, others,
-                                                                      strict=True)]
+        if mover is not None and ends_a_move(delay + k):  # it moves last, the others after it
+            since = (delay + k + 1 - every) * dt
+            target = mover.move(target, since, every * dt)
+            others = [m.move(o, since, every * dt) for m, o in zip(movers, others, strict=True)]
 
     immediate = t_not is not None and t_not == t_det
     several = count > 1

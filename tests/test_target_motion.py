@@ -54,11 +54,12 @@ WALK = {"planner": "covb", "drones": 4, "rc": 1000.0, "horizon": 600.0, "motion"
 WALK_RUNS = 12
 
 
-@pytest.fixture(scope="module")
-def walked() -> list[tuple[object, object]]:
+@pytest.fixture(scope="module", params=[10.0, 0.0], ids=["step-10s", "every-step"])
+def walked(request: pytest.FixtureRequest) -> list[tuple[object, object]]:
     """Runs of a walking target (fast enough to reach the square's walls) flown by the kernel
-    and by the reference: one kernel compiled for the file."""
-    mission = Mission.build(**WALK)  # type: ignore[arg-type]
+    and by the reference, moving every 10 s (the default time step) and at every time step:
+    one kernel compiled for the file."""
+    mission = Mission.build(**WALK, motion_step=request.param)  # type: ignore[arg-type]
     return [(simulate(mission, seed=2024, run=k, trajectory=True),
              simulate_naive(mission, 2024, k, record=True)) for k in range(WALK_RUNS)]
 
@@ -72,9 +73,24 @@ def test_the_kernel_walks_the_target_as_the_reference_does(walked: list) -> None
         track = fast.trajectory.target[:, 0, :]
         np.testing.assert_allclose(track, np.array(slow.target_track), rtol=0.0, atol=1e-6)
         same += (fast.t_detect, fast.t_notify) == (slow.t_detect, slow.t_notify)
-        stopped += bool((track[-1] == track[-2]).all())
+        stopped += bool((track[-1] == track[-11]).all())  # no move in its last 10 s
     assert same >= 0.75 * WALK_RUNS
     assert 0 < stopped < WALK_RUNS  # some stop within the run, others walk on
+
+
+def test_the_target_moves_once_a_step_of_its_own_and_stands_in_between() -> None:
+    """With ``target.motion_step = 10 s`` (dt = 1 s) and a delay of 125 s, the track changes
+    only where 10 s since the sighting have passed: between the records of steps k and k + 1
+    when 125 + k + 1 is a multiple of 10; a step of 0 and a step of dt are the same runs."""
+    mission = Mission.build(**{**WALK, "delay": 125.0, "walk_mobile": 1e6})  # type: ignore
+    track = simulate(mission, seed=2024, run=1, trajectory=True).trajectory.target[:, 0, :]
+    moved = np.flatnonzero((np.diff(track, axis=0) != 0).any(axis=1))
+    assert moved.size > 0 and ((125 + moved + 1) % 10 == 0).all()
+    assert moved.size == len([k for k in range(track.shape[0] - 1) if (125 + k + 1) % 10 == 0])
+    every, dt = (simulate(mission.replace(motion_step=step), seed=2024, run=1, trajectory=True)
+                 for step in (0.0, 1.0))
+    assert np.array_equal(every.trajectory.target, dt.trajectory.target)
+    assert (every.t_detect, every.t_notify) == (dt.t_detect, dt.t_notify)
 
 
 def test_detection_uses_the_target_where_it_is_at_that_step(walked: list) -> None:

@@ -174,6 +174,8 @@ FLAGS: tuple[Flag, ...] = _rows(
      f"{', '.join(target_motion_names())} (docs/model.md, Target motion)", "motion", ONE_RUN),
     ("--delay", float, "seconds from the last sighting to take-off, in which the target "
      "moves (a multiple of --dt)", "delay", ONE_RUN),
+    ("--motion-step", float, "a moving target's time step, s: it moves once every so many "
+     "seconds (a multiple of --dt; 0: every time step)", "motion_step", ONE_RUN),
     ("--walk-speed", float, "walk: the lost person's speed, m/s", "walk_speed", ONE_RUN),
     ("--walk-turn", float, "walk: the spread of the heading's change over a minute, rad",
      "walk_turn", ONE_RUN),

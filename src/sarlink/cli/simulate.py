@@ -127,6 +127,7 @@ def simulate(
     if traj is not None and walked is not None:  # a moving target: where it was when found
         out["target_motion"] = mission.target.motion
         out["target_delay"] = mission.target.delay
+        out["target_motion_step"] = mission.target.motion_step
         found = None if result.t_detect is None else \
             walked[int(np.searchsorted(traj.t, result.t_detect))]
         out["target_at_detection"] = None if found is None else [round(float(v), 1)
@@ -158,7 +159,9 @@ def simulate(
     if result.targets is None:  # several: each one's row below
         table.add_row("target last seen at" if walked is not None else "target at", where)
     if walked is not None:
-        table.add_row("target moves", f"{mission.target.motion}, from "
+        every = (f"every {mission.target.motion_step:g} s" if mission.target.motion_step
+                 else "every time step")
+        table.add_row("target moves", f"{mission.target.motion}, {every}, from "
                       f"{mission.target.delay:g} s before take-off")
         if out["target_at_detection"] is not None:
             table.add_row("target when detected", "({:.0f}, {:.0f}) m".format(

@@ -42,8 +42,8 @@ ADDED_LATER: dict[str, dict[str, Any]] = {
     "battery": {"energy_model": None, "battery_wh": None, "reserve": 0.2, "swap_time": 120.0,
                 "spares": None},
     "target": {"count": 1, "success": "all", "motion": "still", "delay": 0.0,
-               "walk_speed": 0.5, "walk_turn": 0.5, "walk_mobile": 14400.0, "walk_spread": 1.0,
-               "drift_object": "PIW-1",
+               "motion_step": 0.0, "walk_speed": 0.5, "walk_turn": 0.5, "walk_mobile": 14400.0,
+               "walk_spread": 1.0, "drift_object": "PIW-1",
                "drift_wind": [[0.0, 0.0, 0.0]], "drift_current": [[0.0, 0.0, 0.0]]},
 }
 """Parameters added after results were first stored, with the value that keeps the earlier
@@ -54,6 +54,9 @@ left empty so is left out too)."""
 def mission_hash(mission: Mission) -> str:
     """A short content hash of every parameter of ``mission``: the name of its results folder."""
     data = mission.model_dump(mode="json")
+    target = data.get("target", {})
+    if target.get("motion", "still") == "still":  # it never moves, whatever its time step
+        target.pop("motion_step", None)
     for group, fields in ADDED_LATER.items():
         for name, value in fields.items():
             if data.get(group, {}).get(name, value) == value:

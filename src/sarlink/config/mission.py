@@ -306,6 +306,10 @@ class Target(Checked):
     delay: float = Field(
         0.0, ge=0, description="seconds between the last sighting and take-off, during which "
         "the target moves (a multiple of timing.dt)")
+    motion_step: float = Field(
+        10.0, ge=0, description="a moving target's time step, s: it moves once every step "
+        "seconds, by the motion of that time, and stands where it went in between (a "
+        "multiple of timing.dt; 0: every time step)")
     walk_speed: float = Field(
         0.5, gt=0, description="walk: the person's speed, m/s (a slow pace off trail)")
     walk_turn: float = Field(
@@ -446,10 +450,11 @@ class Mission(Checked):
             raise ValueError(f"team.on_detect = {self.team.on_detect!r} follows one target; with "
                              f"target.count = {self.target.count} it must be 'continue' "
                              "(docs/model.md, Several targets)")
-        delay = self.target.delay
-        if delay > 0 and not _multiple_of(delay, t.dt):
-            raise ValueError(f"target.delay must be a multiple of timing.dt = {t.dt} s, got "
-                             f"{delay:g}")
+        for name in ("delay", "motion_step"):
+            value = getattr(self.target, name)
+            if value > 0 and not _multiple_of(value, t.dt):
+                raise ValueError(f"target.{name} must be a multiple of timing.dt = {t.dt} s, "
+                                 f"got {value:g}")
         coh = self.channel.coherence
         if coh is not None and not _multiple_of(coh, t.dt):
             raise ValueError(f"channel.coherence must be a multiple of timing.dt = {t.dt} s, "

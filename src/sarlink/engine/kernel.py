@@ -92,7 +92,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     ``(target_x, target_y)`` is where the target was last seen; a moving target
     (``TARGET_MOVES``) moves from there by the target-motion model's hooks with parameters
     ``tp`` and draws from ``rng_target`` (:mod:`sarlink.engine.target_motion`), first for
-    ``p.target_delay`` steps before take-off, then at the end of every step's move phase.
+    ``p.target_delay`` steps before take-off, then on; it moves every ``p.target_every``
+    steps, at the end of the move phase of the step that ends its own (a clock from the
+    sighting: its ``g``-th step since then ends a move of ``target_every`` steps when
+    ``g + 1`` is a multiple of it), and stands where it went in between.
     ``tt`` are every target's last-seen positions, ``(K, 2)``, the first
     ``(target_x, target_y)``; with several (``MANY_TARGETS``, :mod:`sarlink.engine.many`) the
     others move, after the first, with draws from ``rng_others``.
@@ -111,8 +114,10 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     if TARGET_MOVES:  # compiled only for a moving target (build): its walk before take-off
         txy, tstate = np.array([target_x, target_y]), np.zeros(TARGET_STATE)
         target_start(txy, tstate, tp, rng_target)
-        for j in range(p.target_delay):
-            target_move(txy, tstate, j * p.dt, p.dt, tp, edges, p.size, rng_target)
+        every = p.target_every  # the steps before take-off that end one of the target's
+        for j in range(every - 1, p.target_delay, every):
+            target_move(txy, tstate, (j + 1 - every) * p.dt, every * p.dt, tp, edges, p.size,
+                        rng_target)
         px[n + 1], py[n + 1] = txy[0], txy[1]
     n_tg = tt.shape[0]
     t_det_each, t_not_each = np.full(n_tg, NEVER), np.full(n_tg, NEVER)
@@ -123,10 +128,11 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
         if TARGET_MOVES:  # after the first's walk before take-off, each other's in order
             for o in range(n_tg - 1):
                 target_start(oxy[o], ostate[o], tp, rng_others)
-            for j in range(p.target_delay):
+            every = p.target_every
+            for j in range(every - 1, p.target_delay, every):
                 for o in range(n_tg - 1):
-                    target_move(oxy[o], ostate[o], j * p.dt, p.dt, tp, edges, p.size,
-                                rng_others)
+                    target_move(oxy[o], ostate[o], (j + 1 - every) * p.dt, every * p.dt, tp,
+                                edges, p.size, rng_others)
         ex, ey = np.empty(n_tg), np.empty(n_tg)  # every target's position this step
         in_each = np.zeros((n_tg, n), dtype=np.bool_)
         pass_each = np.zeros((n_tg, n), dtype=np.int64)
@@ -329,14 +335,16 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
                     rejoin, aim_x, aim_y)
         if ENERGY:
             endurance.drain(p, px, py, mode, bx, by, airborne, energy, used)
-        if TARGET_MOVES:  # the target moves last: the next step senses it where it went
-            target_move(txy, tstate, (p.target_delay + k) * p.dt, p.dt, tp, edges, p.size,
+        # the target moves last, at the end of its own step: the next step senses it there
+        if TARGET_MOVES and (p.target_delay + k + 1) % p.target_every == 0:
+            since = (p.target_delay + k + 1 - p.target_every) * p.dt  # its step's start
+            target_move(txy, tstate, since, p.target_every * p.dt, tp, edges, p.size,
                         rng_target)
             px[n + 1], py[n + 1] = txy[0], txy[1]
             if MANY_TARGETS:
                 for o in range(n_tg - 1):
-                    target_move(oxy[o], ostate[o], (p.target_delay + k) * p.dt, p.dt, tp,
-                                edges, p.size, rng_others)
+                    target_move(oxy[o], ostate[o], since, p.target_every * p.dt, tp, edges,
+                                p.size, rng_others)
 
     if not MANY_TARGETS:  # one target: its events are the mission's
         t_det_each[0], t_not_each[0], det_each[0] = t_det, t_not, detector

@@ -124,6 +124,8 @@ class Params(NamedTuple):
     """Spare batteries at the BS (``-1``: unlimited)."""
     target_delay: int
     """Steps the target moves before take-off (``target.delay``; 0 for a still target)."""
+    target_every: int
+    """A moving target's own time step, in steps (``target.step``; 1: every step)."""
     success: int
     """With several targets, whose events are the mission's (``target.success``,
     :class:`~sarlink.engine.codes.Success`)."""

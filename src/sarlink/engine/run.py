@@ -129,6 +129,7 @@ class Prepared:
             relay_estimate=int(ESTIMATE_CODES[mission.team.relay_estimate]),
             **battery_params(mission),
             target_delay=round(mission.target.delay / t.dt) if motion.moves else 0,
+            target_every=max(1, round(mission.target.motion_step / t.dt)) if motion.moves else 1,
             success=int(SUCCESS_CODES[mission.target.success]),
         )
         rp = np.asarray(radio.params(mission) if radio.params else (), dtype=float)
