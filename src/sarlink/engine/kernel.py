@@ -114,7 +114,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     if TARGET_MOVES:  # compiled only for a moving target (build): its walk before take-off
         txy, tstate = np.array([target_x, target_y]), np.zeros(TARGET_STATE)
         target_start(txy, tstate, tp, rng_target)
-        every = p.target_every  # the steps before take-off that end one of the target's
+        every = p.target_every  # the steps before take-off at which a move of its own ends
         for j in range(every - 1, p.target_delay, every):
             target_move(txy, tstate, (j + 1 - every) * p.dt, every * p.dt, tp, edges, p.size,
                         rng_target)
