@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import fcntl
 import json
+import os
+import select
 import subprocess
 import sys
+import time
+from pathlib import Path
 
 import numpy as np
 from typer.testing import CliRunner
@@ -115,6 +120,24 @@ def test_a_long_error_stays_one_line_when_stderr_is_not_a_terminal() -> None:
     assert out.exit_code == 2
     line = next(t for t in out.output.splitlines() if t.startswith("error:"))
     assert len(line) > 80 and line.endswith("got 100")
+
+
+def test_output_into_a_closed_pipe_ends_quietly() -> None:
+    """``sarlink reproduce --help | head``: the reader leaves while sarlink writes, and
+    sarlink stops without an error line. The pipe holds one page, less than the help, so
+    sarlink waits on a write once it is full; the reader closes it then."""
+    read, write = os.pipe()
+    fcntl.fcntl(read, fcntl.F_SETPIPE_SZ, 4096)
+    child = subprocess.Popen([str(Path(sys.executable).parent / "sarlink"), "reproduce",
+                              "--help"], stdout=write, stderr=subprocess.PIPE, text=True)
+    os.close(write)
+    assert select.select([read], [], [], 60)[0]
+    time.sleep(1)  # sarlink has filled the pipe and waits to write the rest
+    assert child.poll() is None
+    os.close(read)
+    stderr = child.communicate(timeout=60)[1]
+    assert stderr == ""
+    assert child.returncode == 1
 
 
 def test_a_single_simulation_does_not_load_pandas() -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import errno
 import os
+import sys
 import warnings
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -117,6 +118,8 @@ class Guarded(TyperGroup):
                 return super().invoke(ctx)
             except (typer.Exit, typer.Abort, KeyboardInterrupt):
                 raise
+            except BrokenPipeError:  # the reader went away (`sarlink ... | head`)
+                _reader_gone()
             except typer.TyperException as exc:  # a subcommand's options did not parse
                 if getattr(exc, "exit_code", USAGE) != USAGE or not hasattr(exc, "ctx"):
                     raise
@@ -127,6 +130,14 @@ class Guarded(TyperGroup):
                 fail(f"unexpected {type(exc).__name__}: {exc}. This is a bug in sarlink or an "
                      "input it does not check yet; run the command again with --debug "
                      "(sarlink --debug ...) for the traceback, and report it", FAILURE)
+
+
+def _reader_gone() -> NoReturn:
+    """Stop quietly when stdout's reader has closed the pipe, as Python's documentation
+    advises (Note on SIGPIPE): the rest of the output goes to ``os.devnull``, so that the
+    interpreter's last flush does not fail again."""
+    os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    raise typer.Exit(FAILURE)
 
 
 def _usage(exc: typer.TyperException) -> NoReturn:
