@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 from naive import component
 from sarlink import ConfigError, Experiment, Mission, execution, register_radio, storage
 from sarlink.at_range import at_range
+from sarlink.compile_times import Part
 from sarlink.engine import RadioModel, sharing
 from sarlink.engine.radios import lognormal
 from sarlink.engine.streams import copied, run_streams
@@ -234,16 +235,15 @@ def test_the_parts_to_compile_spread_the_scan_and_the_ga_over_the_workers(
     """The kernels scan several ranges themselves; the staircase is a part of its own,
     compiled only where a team may be scanned by it: not a team forming a chain to a found
     target (``on_detect = relay``), whose kernel is a part of its own."""
-    parts = [("kernel", "conb", "disc"), ("mtsp",), ("kernel", "mtsp", "disc"),
-             ("kernel", "covb", "disc")]
+    parts = [Part("kernel", "conb"), Part("mtsp"), Part("kernel", "mtsp"), Part("kernel", "covb")]
     tasks = _tasks(tmp_path / "plain", ["conb", "mtsp", "covb"])
     assert execution._parts(execution._jobs(tasks)) == parts
     stairs = _tasks(tmp_path / "stairs", ["conb", "mtsp", "covb"], staircase=True)
-    assert execution._parts(execution._jobs(stairs)) == [*parts, ("ranges", "mtsp", "disc")]
+    assert execution._parts(execution._jobs(stairs)) == [*parts, Part("ranges", "mtsp")]
     conb = _tasks(tmp_path / "conb", ["conb"], staircase=True)
-    assert execution._parts(execution._jobs(conb)) == [("kernel", "conb", "disc")]
+    assert execution._parts(execution._jobs(conb)) == [Part("kernel", "conb")]
     chain = _tasks(tmp_path / "chain", ["covb"], staircase=True, on_detect="relay")
-    assert execution._parts(execution._jobs(chain)) == [("kernel", "covb", "disc", "chain")]
+    assert execution._parts(execution._jobs(chain)) == [Part("kernel", "covb", chain=True)]
 
 
 def test_warming_up_the_scan_compiles_it() -> None:

@@ -7,10 +7,14 @@ import io
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from sarlink import compile_times, execution
+from sarlink import Mission, compile_times, execution
+from sarlink.compile_times import Part
 from sarlink.execution import sweep
 from sarlink.progress import PlainLines
+from sarlink.simulation import prepare
 from test_experiments import small
 
 
@@ -40,28 +44,46 @@ def test_a_resumed_task_starts_where_it_stands() -> None:
 def test_the_estimate_takes_this_machine_s_record(monkeypatch: pytest.MonkeyPatch,
                                                   tmp_path: Path) -> None:
     monkeypatch.setattr(compile_times, "_file", lambda: tmp_path / "seconds.json")
-    parts = [("kernel", "covb", "disc"), ("kernel", "conb", "disc"), ("mtsp",)]
+    parts = [Part("kernel", "covb"), Part("kernel", "conb"), Part("mtsp")]
     typical = compile_times.TYPICAL
     assert compile_times.compile_estimate(parts, 1) == 2 * typical["kernel"] + typical["GA"]
     assert compile_times.compile_estimate(parts, 8) == max(typical.values())
-    compile_times.record_compile(("kernel", "covb", "disc"), 100.0)
+    compile_times.record_compile(Part("kernel", "covb"), 100.0)
     assert compile_times.compile_estimate(parts, 2) == 100.0
     assert compile_times.describe_parts(parts) == "kernels of covb and conb, the GA"
     # mtsp-conb flies ConB's kernel: one name for one kernel
-    assert compile_times.describe_parts([("kernel", "mtsp-conb", "disc"), ("ranges", "mtsp",
-                                          "disc")]) == "kernel of conb, the staircase"
+    assert compile_times.describe_parts([Part("kernel", "mtsp-conb"), Part("ranges", "mtsp")]
+                                        ) == "kernel of conb, the staircase"
 
 
-def test_a_kernel_forming_a_chain_is_a_part_of_its_own() -> None:
-    """``on_detect = relay`` compiles its own kernel (``CHAIN``): its part ends in
-    :data:`~sarlink.compile_times.CHAIN_PART`, which is no relay strategy."""
-    chain = compile_times.CHAIN_PART
-    parts = [("kernel", "covb", "disc", chain), ("kernel", "covb", "disc", "tree", chain),
-             ("kernel", "covb", "disc", "tree")]
-    assert [compile_times.part_relays(p) for p in parts] == [None, "tree", "tree"]
+def test_each_seam_of_a_mission_names_its_own_kernel() -> None:
+    parts = [Part("kernel", "covb", chain=True), Part("kernel", "covb", relays="tree", chain=True),
+             Part("kernel", "covb", relays="tree"), Part("kernel", "conb", energy=True),
+             Part("kernel", "covb", target="walk", many=True)]
     assert compile_times.describe_parts(parts) == (
-        "kernels of covb forming a chain, covb with relays (tree) forming a chain and covb "
-        "with relays (tree)")
+        "kernels of covb forming a chain, covb with relays (tree) forming a chain, covb "
+        "with relays (tree), conb on batteries and covb with a moving target (walk) with "
+        "several targets")
+
+
+SEAMS = {"relays": st.sampled_from([0, 1]), "on_detect": st.sampled_from(["continue", "relay"]),
+         "battery_wh": st.sampled_from([None, 100.0]),
+         "motion": st.sampled_from(["still", "walk", "drift"]), "count": st.sampled_from([1, 2])}
+
+
+@settings(max_examples=30, deadline=None)
+@given(planner=st.sampled_from(["covb", "conb", "concov", "parallel"]), radio=st.sampled_from(
+    ["disc", "shadowing"]), seams=st.fixed_dictionaries(SEAMS))
+def test_a_mission_s_part_is_the_kernel_it_flies(planner: str, radio: str,
+                                                 seams: dict[str, object]) -> None:
+    """The part a sweep compiles before its runs is the kernel object its runs call (the
+    engine's memo of kernels; neither is compiled here)."""
+    if seams["count"] == 2 and seams["on_detect"] == "relay":
+        seams["on_detect"] = "continue"  # several targets take no chain
+    if seams["count"] == 2:
+        seams["relays"] = 0  # nor relays
+    mission = Mission.build(planner=planner, radio=radio, drones=3, **seams)
+    assert Part.kernel_of(mission).kernel() is prepare(mission).kernel
 
 
 def test_a_sweep_says_what_it_compiles_before_it_does(

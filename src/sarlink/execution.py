@@ -20,6 +20,7 @@ ranges costs more than a plain one, which only a job of several ranges earns bac
 
 from __future__ import annotations
 
+import dataclasses
 import multiprocessing
 import os
 import signal
@@ -35,19 +36,12 @@ import pandas as pd
 import pyarrow as pa
 
 from sarlink import storage
-from sarlink.compile_times import (
-    CHAIN_PART,
-    compile_estimate,
-    describe_parts,
-    part_relays,
-    record_compile,
-)
+from sarlink.compile_times import Part, compile_estimate, describe_parts, record_compile
 from sarlink.config import ConfigError, Experiment, Mission
 from sarlink.config.experiment import MAX_WORKERS
-from sarlink.engine.build import kernel_for, on_disk
+from sarlink.engine.build import on_disk
 from sarlink.engine.hooks import radio_identity
 from sarlink.engine.radios import get_radio
-from sarlink.engine.relays import get_relay_strategy
 from sarlink.engine.sharing import fly
 from sarlink.planners import MTSP_PLANNERS, get_planner
 from sarlink.progress import progress as progress_bars
@@ -57,7 +51,6 @@ from sarlink.simulation import (
     check_mission,
     plugins_in_code,
     prepare,
-    warm_up,
 )
 
 __all__ = ["Workers", "start_workers", "sweep", "sweep_all"]
@@ -168,66 +161,52 @@ def _init_worker(parent: int) -> None:
 _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 """One core per worker process: parallelism comes from the processes."""
 
-def _compile(part: tuple[str, ...], plugins: Plugins) -> float:
+def _compile(part: Part, plugins: Plugins) -> float:
     """Compile one Numba part in this worker, or load it from Numba's cache, and return the
-    seconds it took: the kernel of a planner's rule and a radio model
-    (``("kernel", planner, radio)``; those of range-free teams scan a flight at several
-    ranges as it flies), the scan of a flight's notification staircase
-    (``("ranges", planner, radio)``), or the mTSP GA (``("mtsp",)``).
+    seconds it took.
 
     On a fresh machine every worker would otherwise compile each part at its first task;
     compiled once, the parts spread over the workers, the others then load them from the cache.
     """
     start = time.perf_counter()
     adopt_plugins(plugins)
-    if part[0] == "mtsp":
-        from sarlink.mtsp import grid_cells, solve
-
-        solve(grid_cells(1000.0, 500.0), (500.0, 500.0), 2, population=8, iterations=1)
-    else:
-        warm_up(part[1], part[2], ranges=part[0] == "ranges", relays=part_relays(part),
-                chain=CHAIN_PART in part[3:])
+    part.compile()
     return time.perf_counter() - start
 
 
-def _compiled(part: tuple[str, ...]) -> bool:
+def _compiled(part: Part) -> bool:
     """Whether Numba's disk cache already holds ``part``'s machine code (it then loads in a
     second or so)."""
-    if part[0] == "mtsp":
+    if part.kind == "mtsp":
         from sarlink.mtsp.ga import _ga_kernel
 
         return on_disk(_ga_kernel)
-    if part[0] == "ranges":
+    if part.kind == "ranges":
         from sarlink.engine.critical_ranges import critical
 
         return on_disk(critical)
-    relays = part_relays(part)
-    return on_disk(kernel_for(get_planner(part[1]).rule, get_radio(part[2]),
-                              get_relay_strategy(relays) if relays else None,
-                              chain=CHAIN_PART in part[3:]))
+    return on_disk(part.kernel())
 
 
-def _parts(jobs: Sequence[_Job]) -> list[tuple[str, ...]]:
+def _parts(jobs: Sequence[_Job]) -> list[Part]:
     """The compiled parts ``jobs`` need, in the order to compile them: the first kernel, the
     GA if they plan with it (no kernel needed: it runs beside the first), the other kernels
-    (one per rule and radio model), and the scan of the staircase if a job asks for it
+    (one per rule, radio model and seams), and the scan of the staircase if a job asks for it
     whose team may fly once for every range (after the kernels, whose first compile also
-    compiles what they share; the others' rows have no staircase). A kernel part names its
-    planner and radio model, and its relay strategy if its team has relays."""
+    compiles what they share; the others' rows have no staircase)."""
     missions = {t.point.hash: t.point.mission for job in jobs for t in job}.values()
-    kernels: dict[tuple[object, ...], tuple[str, ...]] = {}
+    kernels: dict[tuple[object, ...], Part] = {}
     for m in missions:
-        rule = get_planner(m.team.planner).rule
-        relays = (m.team.relay_strategy,) if m.team.relays else ()
-        chain = (CHAIN_PART,) if m.team.on_detect == "relay" else ()
-        kernels.setdefault((rule, radio_identity(get_radio(m.radio)), *relays, *chain),
-                           ("kernel", m.team.planner, m.radio, *relays, *chain))
+        part = Part.kernel_of(m)
+        seams = dataclasses.replace(part, planner="", radio="")
+        kernels.setdefault((get_planner(m.team.planner).rule,
+                            radio_identity(get_radio(m.radio)), seams), part)
     ga = any(m.team.planner in MTSP_PLANNERS and m.mtsp.solver == "ga" for m in missions)
     shared = next((t.point.mission for job in jobs for t in job
                    if t.staircase and _may_share(t.point.mission)), None)
     order = list(kernels.values())
-    return [*order[:1], *([("mtsp",)] if ga else []), *order[1:],
-            *([("ranges", shared.team.planner, shared.radio)] if shared else [])]
+    return [*order[:1], *([Part("mtsp")] if ga else []), *order[1:],
+            *([Part("ranges", shared.team.planner, shared.radio)] if shared else [])]
 
 
 @contextmanager

@@ -6,6 +6,8 @@ The engine knows rules and routes, not planners; this layer resolves the mission
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from sarlink.config import Mission
@@ -38,18 +40,22 @@ def check_mission(mission: Mission) -> None:
 
 
 def warm_up(planner: str, radio: str, *, ranges: bool = False,
-            relays: str | None = None, chain: bool = False) -> None:
+            relays: str | None = None, chain: bool = False, energy: bool = False,
+            target: str | None = None, many: bool = False) -> None:
     """Compile (or load from the disk cache) the kernel of ``planner``'s rule, the radio
-    model ``radio``, the relay strategy ``relays`` (None: a team without relays) and the
-    chain to a found target if ``chain`` (``on_detect = relay``), by flying one tiny run that
-    needs no plan; with ``ranges``, also the scan of one flight's staircase after it
-    (:meth:`~sarlink.engine.Prepared.run_ranges`), from a drone on a route, which flies the
-    same at every range under any rule's kernel."""
+    model ``radio``, the relay strategy ``relays`` (None: a team without relays), the chain to
+    a found target if ``chain`` (``on_detect = relay``), batteries if ``energy``, the target
+    motion model ``target`` (None: a still target) and several targets if ``many``, by flying
+    one tiny run that needs no plan; with ``ranges``, also the scan of one flight's staircase
+    after it (:meth:`~sarlink.engine.Prepared.run_ranges`), from a drone on a route, which
+    flies the same at every range under any rule's kernel."""
     rule = get_planner(planner).rule
     team = {"drones": 2, "relays": 1, "relay_strategy": relays} if relays else {"drones": 1}
+    seams: dict[str, Any] = {**({"battery_wh": 100.0} if energy else {}),
+             **({"motion": target} if target else {}), **({"count": 2} if many else {})}
     mission = Mission.build(planner=planner, horizon=10.0, radio=radio,
                             sigma=0.0 if radio == "disc" else 1.0,
-                            on_detect="relay" if chain else "continue", **team)
+                            on_detect="relay" if chain else "continue", **team, **seams)
     route = (np.array([mission.area.bs_xy]),)
     if ranges:
         steering = Steering(rule=rule, routes=route)
