@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pandas as pd
 import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
@@ -19,8 +20,10 @@ from sarlink.config import ConfigError
 from sarlink.engine.codes import Mode
 from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
 from sarlink.env.episode import stepping_mission
+from sarlink.metrics import summarize
 from sarlink.result import RunResult
 from sarlink.simulation import prepare
+from sarlink.storage import run_table
 from test_reference import agreeing_runs
 
 ENDURANCE_RUNS = 12
@@ -182,6 +185,28 @@ def test_simulate_prints_each_drone_s_sorties_ground_time_and_energy() -> None:
     assert result.sorties is not None and result.energy is not None
     assert data["sorties"] == result.sorties.tolist() and max(data["sorties"]) >= 2
     assert data["energy_wh"] == pytest.approx(result.energy / 3600.0, abs=1e-3)
+
+
+def test_summarize_averages_sorties_and_energy_over_drones_and_runs() -> None:
+    """A stored table of runs on batteries, beside runs of a team without: summarize gives
+    each group's mean sorties and energy per drone from the runs' own records, and none for
+    the group without batteries."""
+    on = Mission.build(planner="covb", drones=4, horizon=1500.0, **BATTERY)
+    off = Mission.build(planner="covb", drones=4, horizon=1500.0)
+    flown = [simulate(on, seed=3, run=k) for k in range(4)]
+    without = [simulate(off, seed=3, run=k) for k in range(4)]
+    table = pd.concat([run_table(on, 3, flown).to_pandas(),
+                       run_table(off, 3, without).to_pandas()], ignore_index=True)
+    rows = summarize(table, td=[500.0, 1500.0], by=["battery_wh"])
+    with_battery = rows[rows["battery_wh"].notna()]
+    sorties = [float(np.mean(r.sorties)) for r in flown if r.sorties is not None]
+    energy = [float(np.mean(r.energy)) / 3600.0 for r in flown if r.energy is not None]
+    assert len(with_battery) == 2 and len(sorties) == len(energy) == 4
+    assert with_battery["sorties"].tolist() == pytest.approx([np.mean(sorties)] * 2)
+    assert with_battery["energy"].tolist() == pytest.approx([np.mean(energy)] * 2)
+    assert with_battery["sorties_se"].iloc[0] == pytest.approx(np.std(sorties, ddof=1) / 2)
+    assert rows[rows["battery_wh"].isna()]["sorties"].isna().all()
+    assert "sorties" not in summarize(run_table(off, 3, without).to_pandas(), by=[]).columns
 
 
 def test_a_battery_that_only_takes_off_and_lands_is_refused_in_one_line() -> None:

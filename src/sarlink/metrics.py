@@ -115,6 +115,8 @@ MEASURES = {m.column: m for m in (
     Measure("farthest", "farthest connected drone", False, "m", digits=0),
     Measure("found", "targets found", False, digits=2),
     Measure("told", "targets the BS was told of", False, digits=2),
+    Measure("sorties", "sorties per drone", False, digits=2),
+    Measure("energy", "energy per drone", False, "Wh", digits=1),
 )}
 """The measures of :func:`summarize`, by column."""
 
@@ -264,6 +266,23 @@ def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np
                                 ("told", "t_notify_each", t_not)):
             mean, dev, _ = sums.mean(_per_target_count(df[each], one, td), everyone)
             out[name], out[f"{name}_se"] = mean, np.sqrt(sums.covariance(dev, dev, n) / n)
+    if "sorties" in df:  # teams on batteries in some runs: over each whole run, whatever td
+        for name, unit in (("sorties", 1.0), ("energy", 3600.0)):
+            values = _per_drone_mean(df[name]) / unit
+            mean, dev, count = sums.mean(values, ~np.isnan(values))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                out[name] = mean
+                out[f"{name}_se"] = np.sqrt(sums.covariance(dev, dev, count) / count)
+    return out
+
+
+def _per_drone_mean(each: pd.Series) -> np.ndarray:
+    """The mean over the drones of a per-drone record (a list per run), NaN in a run without
+    it (a team without batteries)."""
+    out = np.full(len(each), np.nan)
+    for k, values in enumerate(each.to_list()):
+        if values is not None and not (np.isscalar(values) and pd.isna(values)):
+            out[k] = np.mean(np.asarray(values, dtype=float))
     return out
 
 
@@ -306,6 +325,9 @@ def summarize(df: pd.DataFrame, td: float | Sequence[float] | None = None,
     - ``depth``, ``farthest``: the BS's network at ``t_d`` (the last checkpoint at or before
         it), averaged over the runs: the most hops from the BS to an airborne drone with a
         route, and the distance from the BS of the farthest such drone, m;
+    - ``sorties``, ``energy`` (only if some runs' teams fly on batteries): a drone's sorties
+        and the energy it drew, Wh, averaged over the drones and over those runs, each over
+        its whole run (to the horizon, or to the event the run stopped at), whatever ``t_d``;
 
     with ``*_lo``/``*_hi`` (95% Wilson) beside probabilities and ``*_se`` beside means.
     """

@@ -31,6 +31,9 @@ _MEASURES: list[tuple[str, str]] = [
 says."""
 _EACH = [("targets found", "found"), ("targets the BS was told of", "told")]
 """The rows added when some runs have several targets (``target.count > 1``)."""
+_BATTERIES = [("sorties per drone (whole run)", "sorties"),
+              ("energy per drone (Wh, whole run)", "energy")]
+"""The rows added when some runs' teams fly on batteries (``battery.battery_wh``)."""
 
 
 def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
@@ -45,7 +48,8 @@ def _print_tables(table: pd.DataFrame, by: list[str], per_group: int) -> None:
         out.add_column("measure")
         for td in rows["td"]:
             out.add_column(f"t_d = {td:g} s", justify="right")
-        for label, column in _MEASURES + (_EACH if "found" in rows else []):
+        for label, column in (_MEASURES + (_EACH if "found" in rows else [])
+                              + (_BATTERIES if "sorties" in rows else [])):
             measure = MEASURES[column]
             out.add_row(label, *(measure.text(row) for _, row in rows.iterrows()))
         console.print(out)
