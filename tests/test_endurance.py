@@ -19,7 +19,6 @@ from sarlink.cli import app
 from sarlink.config import ConfigError
 from sarlink.engine.codes import Mode
 from sarlink.engine.energy import CLIMB_RATE, DESCENT_RATE, get_energy_model
-from sarlink.env.episode import stepping_mission
 from sarlink.metrics import summarize
 from sarlink.result import RunResult
 from sarlink.simulation import prepare
@@ -165,12 +164,6 @@ def test_a_team_without_a_battery_flies_today_s_kernel() -> None:
     assert on.energy and "_energy" in on.kernel.__module__
     assert not on.range_free
     assert simulate(Mission.build(planner="covb", drones=4), seed=0, run=0).sorties is None
-
-
-def test_the_stepping_env_refuses_batteries_in_one_line() -> None:
-    mission = Mission.build(planner="covb", drones=4, **BATTERY)
-    with pytest.raises(ConfigError, match=r"^battery.battery_wh = 20: sarlink.env .*$"):
-        stepping_mission(mission)
 
 
 def test_simulate_prints_each_drone_s_sorties_ground_time_and_energy() -> None:

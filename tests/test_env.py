@@ -44,7 +44,9 @@ def same_result(a, b) -> bool:  # type: ignore[no-untyped-def]
             and a.detector == b.detector and a.immediate == b.immediate
             and np.array_equal(a.checkpoints, b.checkpoints)
             and np.array_equal(a.reach_cum, b.reach_cum, equal_nan=True)
-            and np.array_equal(a.connected_cum, b.connected_cum, equal_nan=True))
+            and np.array_equal(a.connected_cum, b.connected_cum, equal_nan=True)
+            and all(x is y is None or (x is not None and y is not None and np.array_equal(x, y))
+                    for x, y in ((a.sorties, b.sorties), (a.energy, b.energy))))
 
 
 @pytest.mark.parametrize("actions", ["continuous", "discrete"])
@@ -106,9 +108,14 @@ def test_bad_render_requests_are_one_line() -> None:
         parallel_env(SMALL, render_mode="rgb_array").render()
 
 
-@pytest.mark.parametrize("planner", ["covb", "conb"])
-def test_the_rules_own_decisions_fly_as_simulate(planner: str) -> None:
-    mission = Mission.build(planner=planner, drones=8, rc=500.0, horizon=1500.0)
+@pytest.mark.parametrize(("planner", "seams"), [
+    ("covb", {}), ("conb", {}),
+    # a walking target and batteries: the stepping kernel compiles the mission's seams
+    ("covb", {"motion": "walk", "walk_speed": 2.0, "battery_wh": 60.0,
+              "energy_model": "zeng2019", "swap_time": 60.0, "altitude": 40.0})])
+def test_the_rules_own_decisions_fly_as_simulate(planner: str, seams: dict[str, object]
+                                                  ) -> None:
+    mission = Mission.build(planner=planner, drones=8, rc=500.0, horizon=1500.0, **seams)
     e = parallel_env(mission)
     notified = 0
     for seed, run in RUNS:

@@ -155,9 +155,19 @@ class Prepared:
         relay strategy (if it has relays), its chain to a found target (if
         ``on_detect = relay``), its batteries, the target's motion (if it moves) and several
         targets (if ``target.count > 1``)."""
+        return self._kernel(stepping=False)
+
+    @property
+    def stepping_kernel(self) -> Any:
+        """The stepping form of :attr:`kernel` (``sarlink.env``), with the same seams: a
+        generator of the kernel's state at every step at which a drone decides."""
+        return self._kernel(stepping=True)
+
+    def _kernel(self, *, stepping: bool) -> Any:
         return kernel_for(self.steering.rule, get_radio(self.mission.radio), self.relays,
-                          chain=self.params.on_detect == RELAY, energy=self.energy,
-                          target=self.target_motion, many=self.mission.target.count > 1)
+                          stepping=stepping, chain=self.params.on_detect == RELAY,
+                          energy=self.energy, target=self.target_motion,
+                          many=self.mission.target.count > 1)
 
     @property
     def energy(self) -> bool:

@@ -15,10 +15,8 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from sarlink.config import ConfigError, Mission
-from sarlink.engine.build import kernel_for
 from sarlink.engine.observation import Observation
 from sarlink.engine.params import Params
-from sarlink.engine.radios import get_radio
 from sarlink.engine.records import RunRecord
 from sarlink.engine.run import Prepared, run_result
 from sarlink.engine.scenario import draw_scenario
@@ -65,9 +63,6 @@ def stepping_mission(mission: Mission) -> Prepared:
         raise ConfigError(f"target.count = {mission.target.count}: sarlink.env searches for "
                           "one target yet (its stepping kernel is compiled without several); "
                           "allowed: target.count = 1")
-    if mission.battery.battery_wh is not None:
-        raise ConfigError(f"battery.battery_wh = {mission.battery.battery_wh:g}: sarlink.env "
-                          "flies drones without batteries yet; allowed: no battery_wh")
     planner = get_planner(mission.team.planner)
     steering = planner.steering(mission)
     if steering.rule is None or not steering.distributed(mission.team.drones).all():
@@ -89,9 +84,7 @@ class Episode:
         streams = run_streams(seed, run)
         scenario = draw_scenario(prepared.mission, streams.scenario)
         self.target = (float(scenario.target[0]), float(scenario.target[1]))
-        kernel = kernel_for(prepared.steering.rule, get_radio(prepared.mission.radio),
-                            stepping=True)
-        self._steps = kernel(*prepared.arguments(streams, scenario))
+        self._steps = prepared.stepping_kernel(*prepared.arguments(streams, scenario))
         self.record: RunRecord | None = None
         self._advance()
 
@@ -127,4 +120,5 @@ class Episode:
         """The run's records, as :func:`sarlink.simulate` returns them (once it has ended)."""
         if self.record is None:
             raise RuntimeError("the run has not ended")
-        return run_result(self.record, self.seed, self.run, self.target)
+        return run_result(self.record, self.seed, self.run, self.target,
+                          batteries=self.prepared.energy)
