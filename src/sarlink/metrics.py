@@ -17,7 +17,7 @@ and for the BS's network its snapshots ``depth`` and ``farthest`` at the same ch
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -276,13 +276,20 @@ def _measures(df: pd.DataFrame, gid: np.ndarray, td: np.ndarray) -> dict[str, np
     return out
 
 
+def _listed(each: pd.Series) -> Iterator[tuple[int, np.ndarray]]:
+    """The rows of a list column that hold a list (a run without one holds None or NaN), as
+    ``(row, values)``."""
+    for k, values in enumerate(each.to_list()):
+        if values is not None and not (np.isscalar(values) and pd.isna(values)):
+            yield k, np.asarray(values, dtype=float)
+
+
 def _per_drone_mean(each: pd.Series) -> np.ndarray:
     """The mean over the drones of a per-drone record (a list per run), NaN in a run without
     it (a team without batteries)."""
     out = np.full(len(each), np.nan)
-    for k, values in enumerate(each.to_list()):
-        if values is not None and not (np.isscalar(values) and pd.isna(values)):
-            out[k] = np.mean(np.asarray(values, dtype=float))
+    for k, values in _listed(each):
+        out[k] = np.mean(values)
     return out
 
 
@@ -290,9 +297,8 @@ def _per_target_count(each: pd.Series, one: np.ndarray, td: np.ndarray) -> np.nd
     """How many targets' times of ``each`` (a list per run; None in a run of one target,
     whose time is ``one``) are at most each run's ``td``."""
     out = (one <= td).astype(float)
-    for k, times in enumerate(each.to_list()):
-        if times is not None and not (np.isscalar(times) and pd.isna(times)):
-            out[k] = np.count_nonzero(np.asarray(times, dtype=float) <= td[k])
+    for k, times in _listed(each):
+        out[k] = np.count_nonzero(times <= td[k])
     return out
 
 
