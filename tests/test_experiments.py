@@ -23,7 +23,7 @@ from typer.testing import CliRunner
 from sarlink import ConfigError, Experiment, Mission, load, prepare, sweep
 from sarlink.cli import app
 from sarlink.config import mission_hash
-from sarlink.execution import _environment
+from sarlink.execution import _environment, _Local, start_workers
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "sweep.toml"
 
@@ -130,6 +130,30 @@ def test_environment_is_set_then_restored(monkeypatch: pytest.MonkeyPatch) -> No
     with _environment({"SARLINK_A": "1", "SARLINK_B": "2"}):
         assert (os.environ["SARLINK_A"], os.environ["SARLINK_B"]) == ("1", "2")
     assert os.environ["SARLINK_A"] == "before" and "SARLINK_B" not in os.environ
+
+
+def _worker(name: str) -> tuple[int, str | None]:
+    return os.getpid(), os.environ.get(name)
+
+
+def _in_worker(name: str) -> tuple[int, str | None]:
+    """A fresh local pool's worker: its process id and its value of ``name``."""
+    with start_workers(1) as pool:
+        assert isinstance(pool, _Local)
+        return pool.submit(_worker, name).result()
+
+
+def test_a_second_sweep_finds_the_workers_of_the_first_unless_their_inputs_changed(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("SARLINK_A", "before")
+    first, value = _in_worker("SARLINK_A")
+    assert value == "before" and _in_worker("NUMBA_NUM_THREADS") == (first, "1")
+    monkeypatch.setenv("SARLINK_A", "after")  # a variable workers read: new workers
+    second, value = _in_worker("SARLINK_A")
+    assert value == "after" and second != first
+    with pytest.raises(KeyboardInterrupt), start_workers(1):
+        raise KeyboardInterrupt  # stopped: the next sweep starts new workers
+    assert _in_worker("SARLINK_A")[0] != second
 
 
 # -- sweeps ------------------------------------------------------------------------------------

@@ -20,7 +20,7 @@ from sarlink import Mission, RunResult, simulate
 from sarlink.engine.codes import Mode
 from sarlink.simulation import prepare
 
-RUNS = 120
+RUNS = 60
 CASES = {
     "covb": {"planner": "covb"},
     "conb": {"planner": "conb"},

@@ -21,19 +21,20 @@ ranges costs more than a plain one, which only a job of several ranges earns bac
 from __future__ import annotations
 
 import dataclasses
-import multiprocessing
 import os
 import signal
+import sys
 import threading
 import time
 from collections.abc import Callable, Generator, Iterator, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import Executor, Future, as_completed
 from contextlib import ExitStack, closing, contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple, Protocol
 
 import pandas as pd
 import pyarrow as pa
+from loky import get_reusable_executor
 
 from sarlink import storage
 from sarlink.compile_times import Part, compile_estimate, describe_parts, record_compile
@@ -161,6 +162,32 @@ def _init_worker(parent: int) -> None:
 _WORKER_ENV = {"NUMBA_NUM_THREADS": "1"}
 """One core per worker process: parallelism comes from the processes."""
 
+_IDLE_SECONDS = 300
+"""How long a local pool's workers wait for the next sweep before they exit."""
+
+_INHERITED = ("SARLINK_", "NUMBA_", "XDG_", "HOME")
+"""The environment variables a worker reads (sarlink's cache, Numba's settings)."""
+
+_last_pool: list[object] = [None]
+
+
+def _local_pool(count: int) -> Executor:
+    """``count`` worker processes, the same ones as the last sweep's when nothing they took
+    from this process has changed since: the search path, the plug-ins registered in code
+    and the environment variables they read. Starting a worker costs seconds (imports, the
+    kernels loaded from Numba's cache); a caller that sweeps again (a notebook, ``reproduce``'s
+    stages, a test suite) finds them warm. loky's reusable executor keeps them; they start
+    as ``spawn`` starts them (a clean interpreter that imports the caller's main module, where
+    a script's plug-ins live), when a task is submitted (:meth:`_Local.submit`)."""
+    inherited = {k: v for k, v in os.environ.items() if k.startswith(_INHERITED)}
+    key = (tuple(sys.path), plugins_in_code(), inherited)
+    reuse = key == _last_pool[0]
+    _last_pool[0] = key
+    return get_reusable_executor(
+        count, context="loky_init_main", timeout=_IDLE_SECONDS,
+        reuse="auto" if reuse else False, initializer=_init_worker, initargs=(os.getpid(),))
+
+
 def _compile(part: Part, plugins: Plugins) -> float:
     """Compile one Numba part in this worker, or load it from Numba's cache, and return the
     seconds it took.
@@ -236,8 +263,13 @@ class Workers(Protocol):
 class _Local:
     """A local process pool."""
 
-    def __init__(self, pool: ProcessPoolExecutor, count: int) -> None:
+    def __init__(self, pool: Executor, count: int) -> None:
         self.pool, self.count = pool, count
+
+    def submit(self, fn: Callable[..., Any], *args: Any) -> Future[Any]:
+        """Submit ``fn(*args)``; a worker started now inherits :data:`_WORKER_ENV`."""
+        with _environment(_WORKER_ENV):
+            return self.pool.submit(fn, *args)
 
     def compile(self, jobs: Sequence[_Job], progress: bool) -> None:
         """Compile the parts ``jobs`` need that Numba's disk cache lacks, on all workers at
@@ -251,13 +283,13 @@ class _Local:
             shown = bars.add_task(
                 f"compiling the engine ({describe_parts(parts)}), once per machine: about "
                 f"{guess:.0f} s", total=len(parts))
-            futures = {self.pool.submit(_compile, part, plugins): part for part in parts}
+            futures = {self.submit(_compile, part, plugins): part for part in parts}
             for future in as_completed(futures):
                 record_compile(futures[future], future.result())
                 bars.advance(shown, 1)
 
     def results(self, jobs: Sequence[_Job]) -> _Results:
-        futures = {self.pool.submit(_run_chunk, *call): job
+        futures = {self.submit(_run_chunk, *call): job
                    for call, job in zip(_calls(jobs), jobs, strict=True)}
         try:
             for future in as_completed(futures):
@@ -304,16 +336,12 @@ def start_workers(workers: int | None = None, *, scheduler: str | None = None,
     _check(workers, scheduler, dask_local)
     count = workers or os.cpu_count() or 1
     if scheduler is None and not dask_local:
-        # spawn: workers start from a clean interpreter (no forked threads or locks), with
-        # the environment of the moment they start
-        context = multiprocessing.get_context("spawn")
-        with _environment(_WORKER_ENV), ProcessPoolExecutor(
-                count, mp_context=context, initializer=_init_worker,
-                initargs=(os.getpid(),)) as pool:
-            try:
-                yield _Local(pool, count)
-            finally:
-                pool.shutdown(cancel_futures=True)
+        pool = _local_pool(count)
+        try:
+            yield _Local(pool, count)
+        except BaseException:  # Ctrl-C or a failed task: the queue was cancelled, wait for
+            pool.shutdown(wait=True)  # the running tasks; the next sweep starts new workers
+            raise
         return
     from distributed import Client, LocalCluster
 
@@ -398,10 +426,8 @@ def sweep_all(jobs: Sequence[tuple[Experiment, str | Path]], *, workers: int | N
         if tasks:
             batches = _jobs(tasks)
             if pool is None:
-                local = min(workers or os.cpu_count() or 1, len(batches))
                 pool = stack.enter_context(start_workers(
-                    None if scheduler is not None else local, scheduler=scheduler,
-                    dask_local=dask_local))
+                    workers, scheduler=scheduler, dask_local=dask_local))
             total = sum(experiment.runs * len(store.points)
                         for store, (experiment, _) in zip(stores, jobs, strict=True))
             name = jobs[0][0].name if len(jobs) == 1 else f"{len(jobs)} experiments"
