@@ -51,7 +51,11 @@ def stringent_resources_matter_most(t: PairedTables, s: Settings) -> Verdict:
        mechanism={"sarlink-3": (
        "At r_c = 2000 m ConCov's drones are in reach of the BS almost everywhere, where its "
        "connectivity term keeps the heading, so it searches as CovB does and detects no "
-       "later.")})
+       "later."),
+       "sarlink-4": (
+       "At r_c = 2000 m the BS's disc covers most of the area, so connectivity slows no drone: "
+       "ConB's and ConCov's drones turn at the disc's rim and sweep its outer ring, and with small "
+       "teams they find more by 1000 s than CovB's, which fly on to the area's edge.")})
 def connectivity_aware_tradeoff(t: PairedTables, s: Settings) -> Verdict:
     """For ConB and ConCov against mTSP and CovB, averaged over team sizes (paired): at t_d =
     4000 s and Fig. 5's ranges, the immediate notification ("simultaneous detection and
@@ -69,7 +73,12 @@ def connectivity_aware_tradeoff(t: PairedTables, s: Settings) -> Verdict:
        "On the other hand, mTSP schemes can find the targets fast, but require more "
        "tolerance to notification delays.",
        "mTSP and mTSP-ConB detect sooner than ConB and ConCov but notify later after "
-       "detection.")
+       "detection.",
+       mechanism={"sarlink-4": (
+       "At r_c = 500 m ConCov notifies at detection hardly more often than mTSP and mTSP-ConB, and "
+       "its other finds wait for a drone to come back within reach; mTSP's drones land at their "
+       "tours' ends sooner, and mTSP-ConB's six tours end after 1000–1300 s, a wait ConCov's beats "
+       "only from 16 drones.")})
 def mtsp_fast_but_delayed(t: PairedTables, s: Settings) -> Verdict:
     """For mTSP and mTSP-ConB (above N_r, where it is not mTSP) against ConB and ConCov,
     averaged over team sizes (paired): "can find the targets fast", at t_d = 1000 s and every

@@ -64,7 +64,12 @@ def mtsp_guarantees_coverage(t: PairedTables, s: Settings) -> Verdict:
        "are in reach than mTSP's, whose N_m drones spread and relay for each other; and at "
        "r_c = 2000 m ConCov's drones are in reach of the BS almost everywhere, where its "
        "connectivity term keeps the heading, so it searches as CovB does and detects no "
-       "later.")})
+       "later."),
+       "sarlink-4": (
+       "At r_c = 1000 m mTSP's larger teams leave together on many short tours and relay for each "
+       "other (4.7 hops deep at 300–400 s with 22 drones), while mTSP-ConB's network stays within "
+       "one or two hops of the BS, so its far finds wait; at 2000 m ConCov's drones turn at the "
+       "rim of the BS's disc and sweep its outer ring sooner than CovB's.")})
 def hybrids_trade_search_for_notification(t: PairedTables, s: Settings) -> Verdict:
     """For mTSP-ConB against mTSP (above N_r) and ConCov against CovB, averaged over team
     sizes: "advantages regarding notification performance", at t_d = 4000 s and Fig. 5's ranges
