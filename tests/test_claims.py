@@ -34,7 +34,7 @@ from sarlink.paper.findings import (
     section3,
 )
 from sarlink.paper.findings.helpers import HIGHLY_LIKELY
-from sarlink.paper.paired import RunGrid, Stat, mean_of, on_common
+from sarlink.paper.paired import RunGrid, Stat, mean_of, on_common, t_interval
 
 HOLDS, CONTRADICTED, UNDECIDED, UNTESTABLE = (Outcome.HOLDS, Outcome.CONTRADICTED,
                                               Outcome.UNDECIDED, Outcome.NOT_TESTABLE)
@@ -73,6 +73,17 @@ def test_a_difference_of_success_indicators_combines_exact_and_wilson_intervals(
     # McNemar's exact two-sided p = 2 · 9/256 = 0.07: no sign, and the interval says so
     assert stats.binomtest(7, 8).pvalue == pytest.approx(2 * 9 / 256)
     assert d.above() is UNDECIDED
+
+
+@pytest.mark.filterwarnings("ignore:Precision loss:RuntimeWarning")  # SciPy's, on equal values
+@given(st.lists(st.floats(-1e6, 1e6), min_size=2, max_size=300),
+       st.floats(1e-9, 1e3), st.sampled_from([0.95, 0.975, 1 - 0.05 / 12]))
+def test_the_t_interval_is_scipys_bit_for_bit(values: list[float], scale: float,
+                                              level: float) -> None:
+    x = np.asarray(values) * scale
+    ci = stats.ttest_1samp(x, 0.0).confidence_interval(level)
+    got = t_interval(x, level)
+    assert np.array_equal(got, (float(ci.low), float(ci.high)), equal_nan=True)
 
 
 @given(st.integers(0, 30), st.integers(0, 30), st.integers(0, 40))
