@@ -108,21 +108,29 @@ class Stat:
             # the difference is (m/n)(2π − 1): π, the share of discordant runs the first wins,
             # has its exact interval, m/n its Wilson interval, each at half the error rate
             inner = 1 - (1 - level) / 2
-            ci = stats.binomtest(first, m).proportion_ci(inner, method="exact")
+            low, high = _clopper_pearson(first, m, inner)
             few, many = (float(b) for b in wilson(m, runs, z=float(special.ndtri(
                 0.5 + inner / 2))))
-            lo, hi = 2 * ci.low - 1, 2 * ci.high - 1
+            lo, hi = 2 * low - 1, 2 * high - 1
             return Estimate(self.value, (many if lo < 0 else few) * lo,
                             (many if hi >= 0 else few) * hi, self.digits)
         if self.counts is not None:
             z = float(special.ndtri(0.5 + level / 2))
-            lo, hi = wilson(*self.counts, z=z)
-            return Estimate(self.value, float(lo), float(hi), self.digits)
+            bounds = wilson(*self.counts, z=z)
+            return Estimate(self.value, float(bounds[0]), float(bounds[1]), self.digits)
         if np.allclose(self.influence, 0.0, rtol=0.0, atol=1e-12 * max(1.0, abs(self.value))):
             tied = self.contrast and abs(self.value) <= 1e-12
             return Estimate(self.value, self.value, self.value, self.digits, tied=tied)
         low, high = t_interval(self.value + self.influence, level)
         return Estimate(self.value, low, high, self.digits)
+
+
+@functools.cache
+def _clopper_pearson(k: int, n: int, level: float) -> tuple[float, float]:
+    """SciPy's exact interval of a binomial proportion ``k/n`` at ``level``, kept: the same
+    discordant counts recur over the claims and readings of a report."""
+    ci = stats.binomtest(k, n).proportion_ci(level, method="exact")
+    return float(ci.low), float(ci.high)
 
 
 def t_interval(x: np.ndarray, level: float) -> tuple[float, float]:
