@@ -191,9 +191,10 @@ def test_two_workers_and_another_chunk_give_the_same_rows(
 
 
 def test_dask_gives_the_same_rows(reference: tuple[Path, pd.DataFrame], tmp_path: Path) -> None:
-    """Half on a LocalCluster of the sweep's own, the rest on a running cluster's scheduler."""
+    """Half on a LocalCluster of the sweep's own (two workers), the rest on a running
+    cluster's scheduler (one worker: the path, not the spread, is what it adds)."""
     sweep(small(runs=50, chunk=25), tmp_path, workers=2, dask_local=True, progress=False)
-    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+    with LocalCluster(n_workers=1, threads_per_worker=1, dashboard_address=None) as cluster:
         df = sweep(small(chunk=25), tmp_path, scheduler=cluster.scheduler_address,
                    progress=False)
     pd.testing.assert_frame_equal(df, reference[1])
