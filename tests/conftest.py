@@ -77,7 +77,7 @@ def pytest_sessionstart(session: pytest.Session) -> None:
 
 class _CompileLog(Listener):
     """``SARLINK_COMPILE_LOG=path``: append a line per top-level Numba compile to ``path``
-    (worker, test, function, seconds), to see where a test run's compile time goes."""
+    (worker, test, module and function, seconds), to see where a test run's compile time goes."""
 
     def __init__(self, path: str) -> None:
         super().__init__()
@@ -90,7 +90,8 @@ class _CompileLog(Listener):
         seconds = time.perf_counter() - self.started.pop()
         if self.started:  # a compile inside another's: counted in the outer one
             return
-        name = getattr(event.data["dispatcher"].py_func, "__qualname__", "?")
+        fn = event.data["dispatcher"].py_func  # a kernel's module names its seams
+        name = f"{getattr(fn, '__module__', '?')}.{getattr(fn, '__qualname__', '?')}"
         test = os.environ.get("PYTEST_CURRENT_TEST", "session start").split(" ")[0]
         with open(self.path, "a") as log:
             log.write(f"{os.environ.get('PYTEST_XDIST_WORKER', 'main')}\t{test}\t{name}\t"
