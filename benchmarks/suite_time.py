@@ -113,10 +113,9 @@ def main() -> None:
         logs.mkdir(parents=True, exist_ok=True)
         run(logs.resolve())
     body = summary(logs)
+    print(body)
     if args.out:
         results_file.write(args.out, "Where CI's time goes", body)
-    else:
-        print(body)
 
 
 if __name__ == "__main__":
