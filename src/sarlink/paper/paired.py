@@ -136,8 +136,8 @@ def _clopper_pearson(k: int, n: int, level: float) -> tuple[float, float]:
 def t_interval(x: np.ndarray, level: float) -> tuple[float, float]:
     """Student's t interval of the mean of ``x`` at ``level``: the bits of
     ``scipy.stats.ttest_1samp(x, 0).confidence_interval(level)``, computed as SciPy does,
-    without its per-call checks and result objects (most of a report's time, over the tens of
-    thousands of intervals its claims ask for)."""
+    without its per-call checks and result objects (most of the time of the tens of thousands
+    of intervals a report's claims ask for)."""
     n = len(x)
     mean = np.mean(x)
     se = np.sqrt(np.mean((x - mean) ** 2) * (n / (n - 1)) / n)
