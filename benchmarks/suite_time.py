@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import shlex
 import subprocess
 import tempfile
 import time
@@ -31,10 +32,16 @@ from pathlib import Path
 import results_file
 
 ROOT = Path(__file__).resolve().parents[1]
-PYTEST = ["-q", "-n", "auto", "--dist", "loadfile", "--durations=0", "-p", "no:cacheprovider"]
-"""The README's test command (``make test``'s pytest), with every test's duration."""
 _DURATION = re.compile(r"^(\d+\.\d+)s (call|setup|teardown)\s+(\S+)", re.MULTILINE)
 _REPORTED = re.compile(r" in (\d+\.\d+)s")
+
+
+def test_command(clone: Path) -> list[str]:
+    """``make test``'s pytest command, as ``make -n`` prints it, with every test's duration."""
+    printed = subprocess.run(["make", "-n", "test"], cwd=clone, check=True, capture_output=True,
+                             text=True).stdout.splitlines()
+    line = next(line for line in printed if line.split(" ", 1)[0].endswith("/pytest"))
+    return [*shlex.split(line), "--durations=0"]
 
 
 def run(logs: Path) -> None:
@@ -45,11 +52,10 @@ def run(logs: Path) -> None:
         (logs / "commit.txt").write_text(subprocess.run(
             ["git", "rev-parse", "--short", "HEAD"], cwd=clone, check=True,
             capture_output=True, text=True).stdout)
-        bin_ = clone / ".venv" / "bin"
         env = {**os.environ, "SARLINK_COMPILE_LOG": str(logs / "compile.log")}
         steps = [("install", ["make", ".venv/bin/sarlink"], "install.log"),
                  ("browser and lint", ["make", "-j2", "browser", "lint"], "lint.log"),
-                 ("pytest", [str(bin_ / "pytest"), *PYTEST], "pytest.log"),
+                 ("pytest", test_command(clone), "pytest.log"),
                  ("docs", ["make", "docs"], "docs.log")]
         (logs / "compile.log").unlink(missing_ok=True)
         with (logs / "times.txt").open("w") as times:
