@@ -42,19 +42,34 @@ def fresh_registries(monkeypatch: pytest.MonkeyPatch) -> None:
         monkeypatch.setattr(registry, "_loaded", registry._loaded)
 
 
-KERNELS = [("mtsp", True, None, False), ("covb", False, None, False),
-           ("conb", False, None, False), ("concov", False, None, False),
-           ("covb", False, "tree", False), ("conb", False, "tree", False),
-           ("mtsp", False, "tree", False), ("covb", False, None, True),
-           ("mtsp", False, None, True), ("covb", False, "tree", True)]
+KERNELS = [
+    [("mtsp", True, None, False), ("covb", False, "tree", False),
+     ("conb", False, "tree", False), ("mtsp", False, "tree", False)],
+    [("covb", False, None, False), ("covb", False, None, True), ("mtsp", False, None, True),
+     ("conb", False, None, False), ("concov", False, None, False),
+     ("covb", False, "tree", True)],
+]
 """The engine's kernels most test files fly (planner, with the range scan, relay strategy,
-with the chain to a found target)."""
+with the chain to a found target), in two lists compiled side by side, each in turn. A
+kernel's first compile also compiles the engine's plain functions it calls (minutes from
+empty caches: those of every kernel, then those of the relay strategy, of the chain) and
+the next kernels load them from the cache; two kernels compiled at once that need the same
+uncompiled functions both compile them. So the relays' functions are compiled by one list
+(its second kernel), the chain's by the other (its second), and the one kernel with both,
+last."""
+
+
+def _compile_in_turn(kernels: list[tuple[str, bool, str | None, bool]]) -> None:
+    from sarlink.simulation import warm_up
+
+    for planner, ranges, relays, chain in kernels:
+        warm_up(planner, "disc", ranges=ranges, relays=relays, chain=chain)
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
     """Before pytest-xdist starts its workers on the whole suite, compile the kernels most
-    test files fly into the cache the workers share, one per core: otherwise every worker
-    compiles each of them (minutes each) when its first test needs it, mostly at once."""
+    test files fly into the cache the workers share, one list per core: otherwise every
+    worker compiles each of them (minutes each) when its first test needs it, mostly at once."""
     config = session.config
     workers = (config.getoption("numprocesses", None)
                if config.pluginmanager.has_plugin("xdist") else None)
@@ -63,15 +78,12 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    from sarlink.simulation import warm_up
-
     root = config._tmp_path_factory.getbasetemp()  # the workers' basetemps are inside it
     (root / "sarlink-cache").mkdir(exist_ok=True)
     os.environ["SARLINK_CACHE_DIR"] = str(root / "sarlink-cache")
     with ProcessPoolExecutor(min(int(workers), len(KERNELS)),
                              mp_context=multiprocessing.get_context("spawn")) as pool:
-        for done in [pool.submit(warm_up, planner, "disc", ranges=ranges, relays=relays,
-                                 chain=chain) for planner, ranges, relays, chain in KERNELS]:
+        for done in [pool.submit(_compile_in_turn, kernels) for kernels in KERNELS]:
             done.result()
 
 
