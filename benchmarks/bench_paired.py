@@ -36,7 +36,7 @@ import time
 from inspect import signature
 from pathlib import Path
 from types import ModuleType
-from typing import Any
+from typing import Any, get_args
 
 import numpy as np
 
@@ -49,6 +49,8 @@ from sarlink.engine.streams import run_streams
 
 ROOT = Path(__file__).resolve().parents[1]
 _NAME = re.compile(r"\bsarlink\b(?=[.\s,)])")
+REGION: dict[str, str] = {}
+"""``--region``: the cases' area (and prior), as the mission's ``region`` table."""
 
 
 def load_revision(rev: str, folder: Path) -> ModuleType:
@@ -109,11 +111,16 @@ def outcome(out: Any) -> list[np.ndarray]:
 
 
 def case_mission(case: str, reading: str) -> Mission:
-    """The mission of a ``planner:drones[:rc[:sigma]]`` case under a named reading."""
+    """The mission of a ``planner:drones[:rc[:sigma]]`` case under a named reading, over the
+    area of ``--region`` (:data:`REGION`) if one is given."""
     planner, drones, *rest = case.split(":")
-    return Mission.build(reading=reading, planner=planner, drones=int(drones),
-                         rc=float(rest[0]) if rest else 1000.0,
-                         sigma=float(rest[1]) if len(rest) > 1 else 0.0)
+    mission = Mission.build(reading=reading, planner=planner, drones=int(drones),
+                            rc=float(rest[0]) if rest else 1000.0,
+                            sigma=float(rest[1]) if len(rest) > 1 else 0.0)
+    if not REGION:
+        return mission
+    return Mission.from_dict({**mission.model_dump(exclude={"channel": {"radio"}}),
+                              "region": REGION})
 
 
 def uncached(rule: Any) -> Any:
@@ -142,7 +149,9 @@ def sides(rev: str, folder: Path) -> dict[str, Side]:
         for group, fields in data.items():
             if not isinstance(fields, dict):
                 continue
-            known = old.config.mission.Mission.model_fields[group].annotation.model_fields
+            annotation = old.config.mission.Mission.model_fields[group].annotation
+            known = next(a for a in get_args(annotation) or (annotation,)  # a table or None
+                         if hasattr(a, "model_fields")).model_fields
             for name, value in list(fields.items()):
                 if name not in known:
                     if ADDED_LATER.get(group, {}).get(name, ...) != value:
@@ -191,10 +200,17 @@ def main() -> None:
     parser.add_argument("--ranges", default="",
                         help="comma-separated ranges (m): fly each case scanned at them (a "
                              "range-free team) instead of recorded")
+    parser.add_argument("--region", default="",
+                        help="AREA[,PRIOR]: GeoJSON files of a polygon area (and its prior) "
+                             "to fly every case over instead of the paper's square")
     parser.add_argument("--out", type=Path, help="write the results here (markdown)")
     parser.add_argument("--one", choices=["old-first", "new-first"], help=argparse.SUPPRESS)
     args = parser.parse_args()
     scan_at = tuple(float(rc) for rc in args.ranges.split(",") if rc)
+    if args.region:
+        area, *prior = args.region.split(",")
+        REGION.update({"area": str(Path(area).resolve()),
+                       **({"prior": str(Path(prior[0]).resolve())} if prior else {})})
     if args.one:  # one compile order, in a process of its own
         measure(args.rev, args.cases, args.runs, args.rounds, args.one == "new-first",
                 args.reading, scan_at)
@@ -206,7 +222,7 @@ def main() -> None:
             out = subprocess.run([sys.executable, __file__, args.rev, "--cases", case,
                                   "--runs", str(args.runs), "--rounds", str(args.rounds),
                                   "--reading", args.reading, "--ranges", args.ranges,
-                                  "--one", order],
+                                  "--region", args.region, "--one", order],
                                  check=True, capture_output=True, text=True)
             same, ratio = out.stdout.split()
             results[order] = (int(same), float(ratio))
@@ -220,6 +236,7 @@ def main() -> None:
         results_file.write(args.out, f"Paired timing: this tree against {args.rev}", "\n".join([
             f"Reading {args.reading}, seed 1, runs 0-{args.runs - 1}, {args.rounds} rounds"
             + (f", range-free flights scanned at {args.ranges} m" if scan_at else "")
+            + (f", over the area {args.region}" if args.region else "")
             + ". Speed-up = old time / new time, the geometric mean of the medians of the "
             "paired ratios in the two compile orders; identical = runs whose every output is "
             "bit for bit the same.", "", "```", *lines, "```"]))

@@ -33,7 +33,7 @@ fit and at a right-angled corner a quarter, so only a drone boxed into a sliver 
 a step is left hovering."""
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def contains(x: float, y: float, edges: np.ndarray) -> bool:
     """Whether ``(x, y)`` lies inside the area (even-odd rule over every ring's edges)."""
     odd = False
@@ -50,7 +50,7 @@ def _side(ax: float, ay: float, bx: float, by: float, cx: float, cy: float) -> f
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def clear(x0: float, y0: float, x1: float, y1: float, edges: np.ndarray) -> bool:
     """Whether the segment ``(x0, y0) -> (x1, y1)`` touches no edge of the area."""
     lo_x, hi_x = min(x0, x1), max(x0, x1)
