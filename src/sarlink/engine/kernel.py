@@ -191,9 +191,11 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     reach_cum, conn_cum = np.empty(cp_steps.shape[0]), np.empty(cp_steps.shape[0])
     depth, farthest = np.full(cp_steps.shape[0], np.nan), np.full(cp_steps.shape[0], np.nan)
     acc_reach = acc_conn = 0.0
-    ci = 0
+    # not literals (nor is push, below): a phase called with a variable first typed as the
+    # literal 0 (-1, False) and then int64 (bool) compiles twice, the literal's copy unused
+    ci = np.int64(0)
     t_det = t_not = NEVER
-    detector = -1
+    detector = np.int64(-1)
     routes = wp.shape[0] > 0
     # a recorded run keeps every step; a moving target may walk into a settled drone's range
     may_settle = radio_static(p, rp) and not p.record and not TARGET_MOVES
@@ -228,12 +230,13 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             first = sensing.sense(px, py, k, p, in_range, pass_start, knows, rng_look)
             if t_det < 0.0 and first >= 0:
                 t_det, detector = t, first
-        push = False  # the pairs within r, on the steps at which a drone may decide
-        if RULE_NEAR:
-            push = RULE_DUE  # a due hook may make a drone decide at any step
+        if RULE_NEAR:  # the pairs within r, on the steps at which a drone may decide
+            push = np.bool_(RULE_DUE)  # a due hook may make a drone decide at any step
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
+        else:  # the literal: the link passes compiled without the pairs within r
+            push = False
         if not scanning:  # a range scan has a link pass of its own, at every range
             graph.links(px, py, pz, thr2, adj, p.r * p.r, near, push)
         reachable, connected = False, 0
