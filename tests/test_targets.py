@@ -25,9 +25,11 @@ from sarlink.simulation import prepare
 from sarlink.storage import run_table
 
 BASE = {"drones": 4, "rc": 1000.0, "horizon": 600.0, "count": 3}
-CASES = {  # a distributed rule, a moving target under another rule, a route planner
+CASES = {  # a distributed rule with targets that stand and that walk, a route planner (one
+    # rule: the kernel's targets are the same code under every rule, and each kernel of several
+    # targets compiles for minutes; the walking one is the first-target test's below)
     "covb-still": {"planner": "covb"},
-    "conb-walk-first": {"planner": "conb", "motion": "walk", "walk_speed": 2.0,
+    "covb-walk-first": {"planner": "covb", "motion": "walk", "walk_speed": 2.0,
                         "delay": 60.0, "success": "first"},
     "parallel-still": {"planner": "parallel"},
 }
