@@ -193,9 +193,9 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
     acc_reach = acc_conn = 0.0
     # not literals (nor is push, below): a phase called with a variable first typed as the
     # literal 0 (-1, False) and then int64 (bool) compiles twice, the literal's copy unused
-    ci = np.int64(0)
+    ci = int(np.int64(0))
     t_det = t_not = NEVER
-    detector = np.int64(-1)
+    detector = int(np.int64(-1))
     routes = wp.shape[0] > 0
     # a recorded run keeps every step; a moving target may walk into a settled drone's range
     may_settle = radio_static(p, rp) and not p.record and not TARGET_MOVES
@@ -231,7 +231,7 @@ def simulate_kernel(p: Params, rp: np.ndarray, target_x: float, target_y: float,
             if t_det < 0.0 and first >= 0:
                 t_det, detector = t, first
         if RULE_NEAR:  # the pairs within r, on the steps at which a drone may decide
-            push = np.bool_(RULE_DUE)  # a due hook may make a drone decide at any step
+            push = bool(np.bool_(RULE_DUE))  # a due hook may make a drone decide at any step
             for i in range(n):
                 push |= (not on_route[i] and mode[i] == SEARCHING
                          and k - last_change[i] >= p.ts_steps)
