@@ -225,8 +225,8 @@ def test_claims_are_those_of_the_recomputed_tables_and_the_report_says_so(
 def test_the_report_gives_the_tally_under_every_preset(quick: ReproductionResult,
                                                        tmp_path: Path) -> None:
     """``--presets`` on Figs. 2-3, in a copy of the quick reproduction's runs (hard links:
-    a sweep replaces a file, never writes into it): the runs under the default are found
-    stored, and the other presets' sweep is Figs. 2-3's alone."""
+    a sweep replaces a file, never writes into it), which the sweep under the default can
+    reuse; the other presets' sweep is Figs. 2-3's alone."""
     shutil.copytree(quick.out / "runs", tmp_path / "runs", copy_function=os.link)
     again = reproduce(tmp_path, quick=True, runs=10, progress=False, figures=[2, 3],
                       presets=True)
